@@ -1,0 +1,21 @@
+# Every dependency comes from a Debian 12 package (scripts/install-deps.sh).
+# Nothing is downloaded at build time.
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(OpenCV 4.6 REQUIRED COMPONENTS core imgproc imgcodecs features2d calib3d line_descriptor)
+find_package(yaml-cpp REQUIRED)
+find_package(fmt REQUIRED)
+find_package(spdlog REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(TBB REQUIRED)
+find_package(Threads REQUIRED)
+
+# nanoflann and tsl::robin_map are header-only; Debian ships their CMake configs.
+find_package(nanoflann REQUIRED)
+find_package(tsl-robin-map REQUIRED)
+
+if(LVSLAM_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(LVSLAM_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,150 @@
+#include "lvslam/io/sequence_info.h"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "lvslam/core/error.h"
+#include "lvslam/core/se3.h"
+#include "lvslam/core/yaml_config.h"
+
+namespace lvslam {
+
+namespace {
+
+CameraInfo parseCamera(const YamlConfig& node) {
+  const std::string model = node.getString("model", "pinhole");
+  if (model != "pinhole") node.at("model").fail("unsupported model '" + model + "' (only pinhole)");
+  const int width = node.at("width").asInt();
+  const int height = node.at("height").asInt();
+  if (width <= 0) node.at("width").fail("must be positive");
+  if (height <= 0) node.at("height").fail("must be positive");
+  const YamlConfig intr = node.at("intrinsics");
+  const std::vector<double> k = intr.asDoubles();
+  if (k.size() != 4) intr.fail(fmt::format("expected 4 numbers [fx, fy, cx, cy], got {}", k.size()));
+  if (!(k[0] > 0.0) || !(k[1] > 0.0)) intr.fail("fx and fy must be positive");
+
+  RadTanDistortion dist;
+  if (const auto d = node.find("distortion")) {
+    const std::string dmodel = d->at("model").asString();
+    if (dmodel != "radtan") d->at("model").fail("unsupported distortion model '" + dmodel + "' (only radtan)");
+    const YamlConfig coeffs_node = d->at("coeffs");
+    const std::vector<double> c = coeffs_node.asDoubles();
+    if (c.size() != 4 && c.size() != 5)
+      coeffs_node.fail(fmt::format("expected 5 numbers [k1, k2, p1, p2, k3], got {}", c.size()));
+    dist = {c[0], c[1], c[2], c[3], c.size() == 5 ? c[4] : 0.0};
+  }
+  return {PinholeCamera(width, height, k[0], k[1], k[2], k[3], dist), node.getDouble("rate_hz", 0.0)};
+}
+
+LidarInfo parseLidar(const YamlConfig& node) {
+  LidarInfo info;
+  info.rings = node.getInt("rings", 0);
+  info.rate_hz = node.getDouble("rate_hz", 0.0);
+  const YamlConfig fields = node.at("point_fields");
+  info.point_fields = fields.asStrings();
+  std::set<std::string> seen;
+  for (const auto& f : info.point_fields)
+    if (!seen.insert(f).second) fields.fail("field '" + f + "' appears twice");
+  for (const char* required : {"x", "y", "z"})
+    if (!seen.count(required)) fields.fail(std::string("must contain '") + required + "'");
+  const std::string ref = node.getString("time_reference", "start");
+  if (ref == "start") {
+    info.time_reference = TimeReference::kStart;
+  } else if (ref == "end") {
+    info.time_reference = TimeReference::kEnd;
+  } else {
+    node.at("time_reference").fail("expected 'start' or 'end', got '" + ref + "'");
+  }
+  return info;
+}
+
+Eigen::Isometry3d parseExtrinsic(const YamlConfig& node) {
+  const std::vector<double> m = node.asDoubles();
+  if (m.size() != 16) node.fail(fmt::format("expected 16 numbers (row-major 4x4), got {}", m.size()));
+  Eigen::Matrix4d M;
+  for (int i = 0; i < 16; ++i) M(i / 4, i % 4) = m[i];
+  if (M(3, 0) != 0.0 || M(3, 1) != 0.0 || M(3, 2) != 0.0 || M(3, 3) != 1.0)
+    node.fail("last row must be [0, 0, 0, 1]");
+  if (!isRotation(M.topLeftCorner<3, 3>(), 1e-3)) node.fail("rotation part is not a rotation (tolerance 1e-3)");
+  // Within tolerance: snap to the nearest rotation so later maths stays exact.
+  return makePose(closestRotation(M.topLeftCorner<3, 3>()), M.topRightCorner<3, 1>());
+}
+
+}  // namespace
+
+Calibration SequenceInfo::calibration() const {
+  Calibration c;
+  if (camera) c.camera = camera->camera;
+  c.T_camera_lidar = T_camera_lidar;
+  return c;
+}
+
+SequenceInfo readSequenceInfo(const std::string& yaml_path) {
+  const YamlConfig root = YamlConfig::loadFile(yaml_path);
+  const std::string format = root.at("format").asString();
+  if (format != kSequenceFormat)
+    root.at("format").fail(fmt::format("expected '{}', got '{}'", kSequenceFormat, format));
+  SequenceInfo info;
+  info.name = root.getString("name", "");
+  if (const auto cam = root.find("camera")) info.camera = parseCamera(*cam);
+  if (const auto lidar = root.find("lidar")) info.lidar = parseLidar(*lidar);
+  if (!info.camera && !info.lidar) root.fail("the sequence has neither 'camera' nor 'lidar'");
+  if (const auto ext = root.find("extrinsics")) {
+    info.T_camera_lidar = parseExtrinsic(ext->at("T_camera_lidar"));
+  } else if (info.camera && info.lidar) {
+    root.at("extrinsics");  // throws: a camera and a LiDAR need their extrinsics
+  }
+  if (const auto gt = root.find("groundtruth")) {
+    const std::string frame = gt->at("frame").asString();
+    if (frame == "camera") {
+      info.groundtruth_frame = GroundTruthFrame::kCamera;
+    } else if (frame == "lidar") {
+      info.groundtruth_frame = GroundTruthFrame::kLidar;
+    } else {
+      gt->at("frame").fail("expected 'camera' or 'lidar', got '" + frame + "'");
+    }
+  }
+  return info;
+}
+
+void writeSequenceInfo(const std::string& yaml_path, const SequenceInfo& info) {
+  std::ofstream out(yaml_path);
+  if (!out) throw Error(yaml_path, "cannot write file");
+  out << "format: " << kSequenceFormat << "\n";
+  out << "name: \"" << info.name << "\"\n";
+  if (info.camera) {
+    const PinholeCamera& c = info.camera->camera;
+    out << "camera:\n  model: pinhole\n";
+    out << fmt::format("  width: {}\n  height: {}\n", c.width(), c.height());
+    out << fmt::format("  intrinsics: [{:.17g}, {:.17g}, {:.17g}, {:.17g}]\n", c.fx(), c.fy(), c.cx(), c.cy());
+    if (c.isDistorted()) {
+      const RadTanDistortion& d = c.distortion();
+      out << fmt::format("  distortion:\n    model: radtan\n    coeffs: [{:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}]\n",
+                         d.k1, d.k2, d.p1, d.p2, d.k3);
+    }
+    if (info.camera->rate_hz > 0.0) out << fmt::format("  rate_hz: {:.17g}\n", info.camera->rate_hz);
+  }
+  if (info.lidar) {
+    const LidarInfo& l = *info.lidar;
+    out << "lidar:\n";
+    if (l.rings > 0) out << fmt::format("  rings: {}\n", l.rings);
+    if (l.rate_hz > 0.0) out << fmt::format("  rate_hz: {:.17g}\n", l.rate_hz);
+    out << fmt::format("  point_fields: [{}]\n", fmt::join(l.point_fields, ", "));
+    out << "  time_reference: " << (l.time_reference == TimeReference::kStart ? "start" : "end") << "\n";
+  }
+  const Eigen::Matrix4d M = info.T_camera_lidar.matrix();
+  out << "extrinsics:\n  T_camera_lidar: [";
+  for (int r = 0; r < 4; ++r)
+    out << fmt::format("{}{:.17g}, {:.17g}, {:.17g}, {:.17g}", r == 0 ? "" : ",\n                   ", M(r, 0),
+                       M(r, 1), M(r, 2), M(r, 3));
+  out << "]\n";
+  if (info.groundtruth_frame)
+    out << "groundtruth:\n  frame: " << (*info.groundtruth_frame == GroundTruthFrame::kCamera ? "camera" : "lidar")
+        << "\n";
+  if (!out) throw Error(yaml_path, "write failed");
+}
+
+}  // namespace lvslam

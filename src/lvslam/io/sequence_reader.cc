@@ -1,0 +1,88 @@
+#include "lvslam/io/sequence_reader.h"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <opencv2/imgcodecs.hpp>
+#include <spdlog/spdlog.h>
+
+#include "lvslam/core/error.h"
+#include "lvslam/io/tum.h"
+
+namespace lvslam {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void warnAboutJumps(const std::vector<TimedFile>& files, const std::string& what) {
+  // A gap is recoverable (the subsystems predict across it), so warn only.
+  for (const std::size_t i : findTimeJumps(files))
+    spdlog::warn("{}: time jumps by {:.3f} s before {} (a drop-out; the odometry predicts across it)", what,
+                 files[i].t - files[i - 1].t, files[i].path);
+}
+
+}  // namespace
+
+SequenceReader::SequenceReader(const std::string& directory) : directory_(directory) {
+  if (!fs::is_directory(directory)) throw Error(directory, "sequence folder not found");
+  info_ = readSequenceInfo((fs::path(directory) / "sequence.yaml").string());
+  if (info_.camera) {
+    const std::string times = (fs::path(directory) / "camera" / "times.txt").string();
+    camera_files_ = readTimesFile(times);
+    warnAboutJumps(camera_files_, times);
+  }
+  if (info_.lidar) {
+    const std::string times = (fs::path(directory) / "lidar" / "times.txt").string();
+    lidar_files_ = readTimesFile(times);
+    warnAboutJumps(lidar_files_, times);
+    layout_ = ScanLayout::fromFields(info_.lidar->point_fields);
+  }
+  if (hasGroundTruth() && !info_.groundtruth_frame)
+    throw Error((fs::path(directory) / "sequence.yaml").string(),
+                "key 'groundtruth.frame': missing required key (groundtruth.txt exists)");
+}
+
+bool SequenceReader::hasGroundTruth() const {
+  return fs::is_regular_file(fs::path(directory_) / "groundtruth.txt");
+}
+
+Trajectory SequenceReader::groundTruth() const {
+  return readTum((fs::path(directory_) / "groundtruth.txt").string());
+}
+
+std::optional<SensorData> SequenceReader::next() {
+  const bool camera_left = next_camera_ < camera_files_.size();
+  const bool lidar_left = next_lidar_ < lidar_files_.size();
+  if (!camera_left && !lidar_left) return std::nullopt;
+  if (lidar_left && (!camera_left || lidar_files_[next_lidar_].t <= camera_files_[next_camera_].t))
+    return loadScan(next_lidar_++);
+  return loadImage(next_camera_++);
+}
+
+ImageFrame SequenceReader::loadImage(std::size_t index) const {
+  const TimedFile& f = camera_files_.at(index);
+  ImageFrame frame;
+  frame.timestamp = f.t;
+  frame.image = cv::imread(f.path, cv::IMREAD_UNCHANGED);
+  if (frame.image.empty()) throw Error(f.path, "cannot decode image");
+  if (frame.image.depth() != CV_8U) throw Error(f.path, "image is not 8-bit");
+  const int channels = frame.image.channels();
+  if (channels != 1 && channels != 3)
+    throw Error(f.path, fmt::format("image has {} channels; expected grayscale or BGR", channels));
+  const PinholeCamera& cam = info_.camera->camera;
+  if (frame.image.cols != cam.width() || frame.image.rows != cam.height())
+    throw Error(f.path, fmt::format("image is {}x{} but sequence.yaml says camera {}x{}", frame.image.cols,
+                                    frame.image.rows, cam.width(), cam.height()));
+  return frame;
+}
+
+LidarScan SequenceReader::loadScan(std::size_t index) const {
+  const TimedFile& f = lidar_files_.at(index);
+  LidarScan scan;
+  scan.timestamp = f.t;
+  readScanFile(f.path, *layout_, scan);
+  return scan;
+}
+
+}  // namespace lvslam
