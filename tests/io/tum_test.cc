@@ -75,6 +75,12 @@ TEST(KittiPoses, ReadsRowMajorPosesWithTimes) {
   dir.write("t.txt", "0.0\n");
   EXPECT_NE(errorMessageOf([&] { readKittiPoses(dir.file("p.txt"), dir.file("t.txt")); }).find("t.txt"),
             std::string::npos);
+  dir.write("t.txt", "# no stamps\n");  // an empty times file is not "no times file"
+  EXPECT_NE(errorMessageOf([&] { readKittiPoses(dir.file("p.txt"), dir.file("t.txt")); }).find("0"),
+            std::string::npos);
+  dir.write("t.txt", "0.2\n0.1\n");
+  EXPECT_NE(errorMessageOf([&] { readKittiPoses(dir.file("p.txt"), dir.file("t.txt")); }).find("t.txt:2"),
+            std::string::npos);
 }
 
 }  // namespace

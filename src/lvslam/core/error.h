@@ -4,6 +4,7 @@
 // line and exit with code 2.
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace lvslam {
 

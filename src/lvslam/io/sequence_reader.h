@@ -10,14 +10,13 @@
 #include "lvslam/core/lidar_scan.h"
 #include "lvslam/core/trajectory.h"
 #include "lvslam/io/scan_file.h"
+#include "lvslam/io/sensor_source.h"
 #include "lvslam/io/sequence_info.h"
 #include "lvslam/io/times_file.h"
 
 namespace lvslam {
 
-using SensorData = std::variant<ImageFrame, LidarScan>;
-
-class SequenceReader {
+class SequenceReader : public SensorSource {
  public:
   // Reads sequence.yaml and the times files; throws lvslam::Error naming
   // the file and key or line on anything malformed.
@@ -32,7 +31,10 @@ class SequenceReader {
 
   // The next image or scan in time order (a scan before an image at the same
   // time stamp); none at the end.
-  std::optional<SensorData> next();
+  std::optional<SensorData> next() override;
+  Calibration calibration() const override { return info_.calibration(); }
+  bool hasCamera() const override { return info_.camera.has_value(); }
+  bool hasLidar() const override { return info_.lidar.has_value(); }
   void rewind() { next_camera_ = next_lidar_ = 0; }
 
   ImageFrame loadImage(std::size_t index) const;

@@ -90,6 +90,8 @@ Trajectory readKittiPoses(const std::string& path, const std::string& times_path
       if (isSkippable(line)) continue;
       if (!parseNumbers(line, v) || v.size() != 1)
         throw Error(at(times_path, line_no), "expected one time stamp");
+      if (!times.empty() && !(v[0] > times.back()))
+        throw Error(at(times_path, line_no), "time stamps must increase");
       times.push_back(v[0]);
     }
   }
@@ -106,17 +108,16 @@ Trajectory readKittiPoses(const std::string& path, const std::string& times_path
     R << v[0], v[1], v[2], v[4], v[5], v[6], v[8], v[9], v[10];
     if (!isRotation(R)) throw Error(at(path, line_no), "rotation part is not a rotation");
     double t = pose_index;
-    if (!times.empty()) {
+    if (!times_path.empty()) {
       if (pose_index >= static_cast<int>(times.size()))
-        throw Error(times_path, "fewer time stamps than poses in " + path);
+        throw Error(times_path, fmt::format("fewer time stamps ({}) than poses in {}", times.size(), path));
       t = times[pose_index];
     }
-    checkIncreasing(path, line_no, traj, t);
     // Kept as written (no re-orthonormalisation), as evo reads them.
     traj.push_back({t, makePose(R, Eigen::Vector3d(v[3], v[7], v[11]))});
     ++pose_index;
   }
-  if (!times.empty() && times.size() != traj.size())
+  if (!times_path.empty() && times.size() != traj.size())
     throw Error(times_path, fmt::format("{} time stamps for {} poses in {}", times.size(), traj.size(), path));
   return traj;
 }

@@ -1,0 +1,102 @@
+// `lvslam eval`: accuracy of an estimated trajectory against ground truth.
+#include <cctype>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "command.h"
+#include "lvslam/core/error.h"
+#include "lvslam/eval/eval_report.h"
+#include "lvslam/eval/evaluate.h"
+#include "lvslam/io/tum.h"
+
+namespace lvslam::apps {
+
+namespace {
+
+struct EvalArgs {
+  std::string gt_path;
+  std::string est_path;
+  std::string format = "tum";
+  std::string times_path;
+  std::string gt_times_path;
+  std::string align = "se3";
+  std::string rpe_pairs_on = "est";
+  eval::EvalOptions options;
+  bool json = false;
+};
+
+Trajectory readTrajectory(const std::string& path, const std::string& format,
+                          const std::string& times_path) {
+  if (format == "kitti") return readKittiPoses(path, times_path);
+  return readTum(path);
+}
+
+std::string toLower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+int runEval(const EvalArgs& args) {
+  if (args.format == "tum" && !(args.times_path.empty() && args.gt_times_path.empty()))
+    throw Error("lvslam eval", "--times and --gt-times apply to --format kitti only");
+  const std::string& gt_times = args.gt_times_path.empty() ? args.times_path : args.gt_times_path;
+  const Trajectory gt = readTrajectory(args.gt_path, args.format, gt_times);
+  const Trajectory est = readTrajectory(args.est_path, args.format, args.times_path);
+  eval::EvalOptions options = args.options;
+  // The option checks already limited these strings to the listed names.
+  const std::string align = toLower(args.align);
+  options.alignment = align == "sim3"   ? eval::Alignment::kSim3
+                      : align == "none" ? eval::Alignment::kNone
+                                        : eval::Alignment::kSE3;
+  options.rpe_pairs_on =
+      toLower(args.rpe_pairs_on) == "gt" ? eval::RpePairsOn::kGroundTruth : eval::RpePairsOn::kEstimate;
+  options.gt_name = args.gt_path;
+  options.est_name = args.est_path;
+  const eval::EvalResult result = eval::evaluate(gt, est, options);
+  std::cout << (args.json ? eval::formatJson(result) + "\n" : eval::formatSummary(result));
+  return 0;
+}
+
+}  // namespace
+
+void addEvalCommand(CLI::App& app, CommandAction& action) {
+  CLI::App* cmd = app.add_subcommand(
+      "eval",
+      "Accuracy of an estimated trajectory against ground truth: poses associated by time, "
+      "ATE after alignment (evo APE, translation part), RPE (evo, consecutive pairs by path "
+      "length, not aligned) and the KITTI odometry metric.");
+  // The arguments outlive parsing: the action runs after app.parse returns.
+  auto args = std::make_shared<EvalArgs>();
+  cmd->add_option("--gt", args->gt_path, "Ground-truth trajectory file")->required();
+  cmd->add_option("--est", args->est_path, "Estimated trajectory file")->required();
+  cmd->add_option("--align", args->align,
+                  "Umeyama alignment of the estimate before ATE: se3 (rotation and translation), "
+                  "sim3 (also scale, for monocular), none")
+      ->check(CLI::IsMember({"se3", "sim3", "none"}, CLI::ignore_case))
+      ->capture_default_str();
+  cmd->add_option("--max-dt", args->options.max_dt,
+                  "Largest time difference (s) of an associated pose pair")
+      ->default_val(0.02)->check(CLI::NonNegativeNumber);
+  cmd->add_option("--format", args->format,
+                  "File format: tum ('t tx ty tz qx qy qz qw' lines) or kitti (12 numbers, a "
+                  "row-major 3x4 [R|t] per line)")
+      ->default_val("tum")->check(CLI::IsMember({"tum", "kitti"}));
+  cmd->add_option("--times", args->times_path,
+                  "kitti format: time stamps of the estimate's poses, one a line (also used for "
+                  "the ground truth unless --gt-times is given); without it poses are stamped 0, 1, 2, ...");
+  cmd->add_option("--gt-times", args->gt_times_path,
+                  "kitti format: time stamps of the ground-truth poses, one a line");
+  cmd->add_option("--rpe-delta", args->options.rpe_delta_m,
+                  "RPE pair distance: metres of path length between the two poses of a pair")
+      ->default_val(10.0)->check(CLI::PositiveNumber);
+  cmd->add_option("--rpe-pairs-on", args->rpe_pairs_on,
+                  "Whose path length picks the RPE pairs: est (evo's default, reproduces its "
+                  "published figures) or gt (evo's --pairs_from_reference)")
+      ->check(CLI::IsMember({"est", "gt"}, CLI::ignore_case))
+      ->capture_default_str();
+  cmd->add_flag("--json", args->json, "Print one JSON object instead of the summary");
+  cmd->callback([&action, args] { action = [args] { return runEval(*args); }; });
+}
+
+}  // namespace lvslam::apps

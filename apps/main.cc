@@ -1,0 +1,28 @@
+#include <exception>
+#include <iostream>
+
+#include "command.h"
+#include "lvslam/core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"lvslam: tightly-coupled LiDAR-visual SLAM on geometric features"};
+  app.require_subcommand(1);
+  lvslam::apps::CommandAction action;
+  lvslam::apps::addEvalCommand(app, action);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const lvslam::Error& e) {
+    std::cerr << "lvslam: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "lvslam: failed: " << e.what() << "\n";
+    return 1;
+  }
+}
