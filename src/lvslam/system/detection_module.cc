@@ -1,0 +1,46 @@
+#include "lvslam/system/detection_module.h"
+
+#include <fmt/format.h>
+
+namespace lvslam::system {
+
+std::string DetectionModule::problemWith(const VisualHealth& h, const std::optional<MotionDisagreement>& d) const {
+  const DetectionConfig& c = config_;
+  // Image first: a dark or washed-out image explains everything after it.
+  if (h.brightness < c.min_brightness) return fmt::format("image too dark (mean {:.0f})", h.brightness);
+  if (h.brightness > c.max_brightness) return fmt::format("image saturated (mean {:.0f})", h.brightness);
+  if (h.contrast < c.min_contrast) return fmt::format("image without contrast (std {:.1f})", h.contrast);
+  if (h.state == VisualState::kLost) return "visual tracking lost";
+  if (h.state == VisualState::kInitializing) return "visual subsystem initializing";
+  if (h.tracked_points < c.min_tracked_points)
+    return fmt::format("{} tracked points (< {})", h.tracked_points, c.min_tracked_points);
+  if (h.tracked_lines < c.min_tracked_lines)
+    return fmt::format("{} tracked lines (< {})", h.tracked_lines, c.min_tracked_lines);
+  if (h.inlier_ratio < c.min_inlier_ratio)
+    return fmt::format("inlier ratio {:.2f} (< {:.2f})", h.inlier_ratio, c.min_inlier_ratio);
+  if (d && (d->translation_m > c.max_disagreement_m || d->rotation_deg > c.max_disagreement_deg))
+    return fmt::format("visual and LiDAR motion disagree ({:.3f} m, {:.2f} deg)", d->translation_m, d->rotation_deg);
+  return "";
+}
+
+OutputSource DetectionModule::update(const VisualHealth& health, const std::optional<MotionDisagreement>& disagreement) {
+  last_problem_ = problemWith(health, disagreement);
+  if (!last_problem_.empty()) {
+    healthy_streak_ = 0;
+    if (source_ == OutputSource::kVisual) {
+      source_ = OutputSource::kLidar;
+      switches_.push_back({health.t, OutputSource::kLidar, last_problem_});
+    }
+    return source_;
+  }
+  ++healthy_streak_;
+  // Returning needs a streak with known, agreeing motion, not one good frame.
+  if (source_ == OutputSource::kLidar && disagreement && healthy_streak_ >= config_.frames_to_recover) {
+    source_ = OutputSource::kVisual;
+    switches_.push_back({health.t, OutputSource::kVisual,
+                         fmt::format("visual tracking healthy for {} frames and agrees with the LiDAR", healthy_streak_)});
+  }
+  return source_;
+}
+
+}  // namespace lvslam::system

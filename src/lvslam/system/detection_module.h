@@ -1,0 +1,73 @@
+#pragma once
+// The detection module (paper, "System Overview"): judges the visual
+// subsystem's health every camera frame and decides whose odometry the
+// system outputs. It falls back to the LiDAR at once when vision fails and
+// returns to vision only after it has been healthy for a while and its
+// motion agrees with the LiDAR's.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lvslam::system {
+
+enum class VisualState { kInitializing, kTracking, kLost };
+
+struct VisualHealth {
+  double t = 0.0;
+  VisualState state = VisualState::kInitializing;
+  int tracked_points = 0;
+  int tracked_lines = 0;
+  double inlier_ratio = 0.0;
+  double brightness = 0.0;  // image mean, 0..255
+  double contrast = 0.0;    // image standard deviation, 0..255
+};
+
+// How far the visual and LiDAR relative motions between the same two camera
+// frames differ (both metric, in the camera frame).
+struct MotionDisagreement {
+  double translation_m = 0.0;
+  double rotation_deg = 0.0;
+};
+
+struct DetectionConfig {
+  int min_tracked_points = 40;
+  int min_tracked_lines = 0;
+  double min_inlier_ratio = 0.5;
+  double min_brightness = 20.0, max_brightness = 245.0;
+  double min_contrast = 8.0;
+  int frames_to_recover = 10;           // consecutive healthy frames before vision is believed again
+  double max_disagreement_m = 0.02;     // per frame, between visual and LiDAR motion
+  double max_disagreement_deg = 0.5;
+};
+
+enum class OutputSource { kVisual, kLidar };
+
+struct SwitchEvent {
+  double t = 0.0;
+  OutputSource to = OutputSource::kLidar;
+  std::string reason;
+};
+
+class DetectionModule {
+ public:
+  explicit DetectionModule(const DetectionConfig& config) : config_(config) {}
+
+  // One camera frame; `disagreement` is absent when either motion is unknown.
+  OutputSource update(const VisualHealth& health, const std::optional<MotionDisagreement>& disagreement);
+
+  OutputSource source() const { return source_; }
+  const std::vector<SwitchEvent>& switches() const { return switches_; }
+  // Why the last frame counted as unhealthy ("" when it was healthy).
+  const std::string& lastProblem() const { return last_problem_; }
+
+ private:
+  std::string problemWith(const VisualHealth& h, const std::optional<MotionDisagreement>& d) const;
+
+  DetectionConfig config_;
+  OutputSource source_ = OutputSource::kLidar;  // until vision has proven itself
+  int healthy_streak_ = 0;
+  std::string last_problem_;
+  std::vector<SwitchEvent> switches_;
+};
+
+}  // namespace lvslam::system

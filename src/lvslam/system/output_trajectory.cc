@@ -1,0 +1,38 @@
+#include "lvslam/system/output_trajectory.h"
+
+namespace lvslam::system {
+
+std::optional<Eigen::Isometry3d> OutputTrajectory::lidarIncrement(const FrameEstimates& frame) const {
+  if (!frame.T_odom_lidar || !last_T_odom_lidar_) return std::nullopt;
+  // Camera motion between the two frames as the LiDAR saw it:
+  // T_cam_prev_cam_now = T_camera_lidar * T_lidar_prev_lidar_now * T_lidar_camera.
+  return T_lidar_camera_.inverse() * (last_T_odom_lidar_->inverse() * *frame.T_odom_lidar) * T_lidar_camera_;
+}
+
+Eigen::Isometry3d OutputTrajectory::add(const FrameEstimates& frame, OutputSource source) {
+  const bool first = trajectory_.empty();
+  const Eigen::Isometry3d T_prev = first ? Eigen::Isometry3d::Identity() : trajectory_.back().T_world_frame;
+  // Where the LiDAR (or, lacking it, standing still) puts this frame.
+  Eigen::Isometry3d T_world_camera = T_prev;
+  if (const auto inc = lidarIncrement(frame)) T_world_camera = T_prev * *inc;
+
+  if (source == OutputSource::kVisual && frame.T_map_camera) {
+    const bool reanchor = !T_world_map_ || anchored_map_id_ != frame.visual_map_id ||
+                          last_source_ != OutputSource::kVisual;
+    if (reanchor) {
+      // On the first frame the visual map frame is the world frame.
+      T_world_map_ = first ? Eigen::Isometry3d::Identity() : T_world_camera * frame.T_map_camera->inverse();
+      anchored_map_id_ = frame.visual_map_id;
+    }
+    T_world_camera = *T_world_map_ * *frame.T_map_camera;
+  } else if (first && frame.T_odom_lidar) {
+    // LiDAR from the start: the odometry frame, carried to the camera.
+    T_world_camera = *frame.T_odom_lidar * T_lidar_camera_;
+  }
+  if (frame.T_odom_lidar) last_T_odom_lidar_ = frame.T_odom_lidar;
+  last_source_ = source;
+  trajectory_.push_back({frame.t, T_world_camera});
+  return T_world_camera;
+}
+
+}  // namespace lvslam::system

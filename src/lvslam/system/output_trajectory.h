@@ -1,0 +1,44 @@
+#pragma once
+// The system's output: T_world_camera at every camera time, continuous across
+// switches between the visual and the LiDAR odometry. In LiDAR mode the
+// LiDAR's motion, carried into the camera frame through the extrinsics, is
+// chained from the last output pose; back in visual mode the visual map
+// (possibly a new one after re-initialization) is re-anchored at the current
+// output pose, so the trajectory has no jump at a switch.
+#include <optional>
+
+#include <Eigen/Geometry>
+
+#include "lvslam/core/trajectory.h"
+#include "lvslam/system/detection_module.h"
+
+namespace lvslam::system {
+
+struct FrameEstimates {
+  double t = 0.0;
+  std::optional<Eigen::Isometry3d> T_map_camera;  // visual estimate in its map frame
+  int visual_map_id = 0;                          // changes when vision re-initializes
+  std::optional<Eigen::Isometry3d> T_odom_lidar;  // LiDAR odometry at the camera time
+};
+
+class OutputTrajectory {
+ public:
+  explicit OutputTrajectory(const Eigen::Isometry3d& T_lidar_camera) : T_lidar_camera_(T_lidar_camera) {}
+
+  // Appends and returns the output pose of this frame.
+  Eigen::Isometry3d add(const FrameEstimates& frame, OutputSource source);
+
+  const Trajectory& trajectory() const { return trajectory_; }
+
+ private:
+  std::optional<Eigen::Isometry3d> lidarIncrement(const FrameEstimates& frame) const;
+
+  Eigen::Isometry3d T_lidar_camera_;
+  Trajectory trajectory_;
+  std::optional<Eigen::Isometry3d> last_T_odom_lidar_;
+  std::optional<Eigen::Isometry3d> T_world_map_;  // anchors the current visual map
+  int anchored_map_id_ = -1;
+  OutputSource last_source_ = OutputSource::kLidar;
+};
+
+}  // namespace lvslam::system
