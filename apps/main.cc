@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   lvslam::apps::CommandAction action;
   lvslam::apps::addEvalCommand(app, action);
+  lvslam::apps::addConvertCommand(app, action);
 
   try {
     app.parse(argc, argv);

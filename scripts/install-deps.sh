@@ -12,6 +12,7 @@ packages=(
   # ROS1 bag reading (optional component LVSLAM_WITH_ROSBAG, on by default)
   librosbag-storage-dev librcpputils-dev librcutils-dev libament-index-cpp-dev
   libsensor-msgs-dev pluginlib-dev libclass-loader-dev
+  libroscpp-core-dev libroslz4-dev libbz2-dev libconsole-bridge-dev
 )
 
 missing=()

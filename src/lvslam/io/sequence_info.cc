@@ -12,9 +12,7 @@
 
 namespace lvslam {
 
-namespace {
-
-CameraInfo parseCamera(const YamlConfig& node) {
+CameraInfo parseCameraInfo(const YamlConfig& node) {
   const std::string model = node.getString("model", "pinhole");
   if (model != "pinhole") node.at("model").fail("unsupported model '" + model + "' (only pinhole)");
   const int width = node.at("width").asInt();
@@ -39,6 +37,8 @@ CameraInfo parseCamera(const YamlConfig& node) {
   return {PinholeCamera(width, height, k[0], k[1], k[2], k[3], dist), node.getDouble("rate_hz", 0.0)};
 }
 
+namespace {
+
 LidarInfo parseLidar(const YamlConfig& node) {
   LidarInfo info;
   info.rings = node.getInt("rings", 0);
@@ -61,7 +61,9 @@ LidarInfo parseLidar(const YamlConfig& node) {
   return info;
 }
 
-Eigen::Isometry3d parseExtrinsic(const YamlConfig& node) {
+}  // namespace
+
+Eigen::Isometry3d parseTransformMatrix(const YamlConfig& node) {
   const std::vector<double> m = node.asDoubles();
   if (m.size() != 16) node.fail(fmt::format("expected 16 numbers (row-major 4x4), got {}", m.size()));
   Eigen::Matrix4d M;
@@ -72,8 +74,6 @@ Eigen::Isometry3d parseExtrinsic(const YamlConfig& node) {
   // Within tolerance: snap to the nearest rotation so later maths stays exact.
   return makePose(closestRotation(M.topLeftCorner<3, 3>()), M.topRightCorner<3, 1>());
 }
-
-}  // namespace
 
 Calibration SequenceInfo::calibration() const {
   Calibration c;
@@ -89,11 +89,11 @@ SequenceInfo readSequenceInfo(const std::string& yaml_path) {
     root.at("format").fail(fmt::format("expected '{}', got '{}'", kSequenceFormat, format));
   SequenceInfo info;
   info.name = root.getString("name", "");
-  if (const auto cam = root.find("camera")) info.camera = parseCamera(*cam);
+  if (const auto cam = root.find("camera")) info.camera = parseCameraInfo(*cam);
   if (const auto lidar = root.find("lidar")) info.lidar = parseLidar(*lidar);
   if (!info.camera && !info.lidar) root.fail("the sequence has neither 'camera' nor 'lidar'");
   if (const auto ext = root.find("extrinsics")) {
-    info.T_camera_lidar = parseExtrinsic(ext->at("T_camera_lidar"));
+    info.T_camera_lidar = parseTransformMatrix(ext->at("T_camera_lidar"));
   } else if (info.camera && info.lidar) {
     root.at("extrinsics");  // throws: a camera and a LiDAR need their extrinsics
   }

@@ -38,6 +38,13 @@ struct SequenceInfo {
   Calibration calibration() const;
 };
 
+class YamlConfig;
+
+// The `camera` block and a row-major 4x4 pose (rotation within 1e-3, snapped
+// to the closest rotation) of sequence.yaml; also used by sensor presets.
+CameraInfo parseCameraInfo(const YamlConfig& node);
+Eigen::Isometry3d parseTransformMatrix(const YamlConfig& node);
+
 // Parses and validates; throws lvslam::Error(file, "key '...': why").
 SequenceInfo readSequenceInfo(const std::string& yaml_path);
 void writeSequenceInfo(const std::string& yaml_path, const SequenceInfo& info);

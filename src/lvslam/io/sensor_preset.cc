@@ -1,0 +1,57 @@
+#include "lvslam/io/sensor_preset.h"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "lvslam/core/error.h"
+#include "lvslam/core/yaml_config.h"
+
+namespace lvslam {
+
+Calibration SensorPreset::calibration() const {
+  Calibration c;
+  if (camera) c.camera = camera->camera;
+  c.T_camera_lidar = T_camera_lidar;
+  return c;
+}
+
+SensorPreset loadSensorPreset(const std::string& path) {
+  const YamlConfig root = YamlConfig::loadFile(path);
+  const std::string format = root.at("format").asString();
+  if (format != kSensorPresetFormat)
+    root.at("format").fail(fmt::format("expected '{}', got '{}'", kSensorPresetFormat, format));
+  SensorPreset preset;
+  preset.name = root.getString("name", std::filesystem::path(path).stem().string());
+  if (const auto topics = root.find("topics")) {
+    preset.lidar_topic = topics->getString("lidar", "");
+    preset.camera_topic = topics->getString("camera", "");
+  }
+  if (const auto camera = root.find("camera")) preset.camera = parseCameraInfo(*camera);
+  if (const auto lidar = root.find("lidar")) {
+    preset.lidar.rings = lidar->getInt("rings", 0);
+    preset.lidar.rate_hz = lidar->getDouble("rate_hz", 0.0);
+    if (preset.lidar.rings < 0) lidar->at("rings").fail("must not be negative");
+  }
+  if (const auto ext = root.find("extrinsics")) {
+    preset.T_camera_lidar = parseTransformMatrix(ext->at("T_camera_lidar"));
+  } else if (preset.camera) {
+    root.at("extrinsics");  // throws: a camera needs its pose relative to the LiDAR
+  }
+  if (const auto gt = root.find("groundtruth")) {
+    const std::string frame = gt->at("frame").asString();
+    if (frame == "camera") preset.groundtruth_frame = GroundTruthFrame::kCamera;
+    else if (frame == "lidar") preset.groundtruth_frame = GroundTruthFrame::kLidar;
+    else gt->at("frame").fail("expected 'camera' or 'lidar', got '" + frame + "'");
+  }
+  return preset;
+}
+
+std::string findSensorPreset(const std::string& name_or_path) {
+  if (std::filesystem::is_regular_file(name_or_path)) return name_or_path;
+  const std::filesystem::path in_config = std::filesystem::path(LVSLAM_CONFIG_DIR) / (name_or_path + ".yaml");
+  if (std::filesystem::is_regular_file(in_config)) return in_config.string();
+  throw Error(name_or_path, fmt::format("no such preset file, nor a preset '{}' in {}", name_or_path, LVSLAM_CONFIG_DIR));
+}
+
+}  // namespace lvslam
