@@ -1,0 +1,85 @@
+#pragma once
+// Every tunable of the LiDAR subsystem (MULLS-style odometry), with the
+// defaults that config/sim.yaml repeats under its `lidar:` section.
+#include <cstddef>
+
+#include "lvslam/core/yaml_config.h"
+
+namespace lvslam::lidar {
+
+struct PreprocessConfig {
+  double min_range = 0.8;    // metres; closer returns hit the robot itself
+  double max_range = 60.0;   // metres
+  double voxel_size = 0.25;  // metres, downsampling before PCA
+};
+
+struct GroundConfig {
+  double grid_size = 2.0;          // metres, cells of the ground grid
+  double height_threshold = 0.15;  // metres above a cell's lowest point: candidates
+  double inlier_distance = 0.05;   // metres from the cell's fitted plane: ground
+  double max_normal_angle_deg = 15.0;
+  int min_points_per_cell = 4;
+  double max_sensor_height = -0.3;  // ground lies below z = this in the LiDAR frame
+};
+
+struct FeatureConfig {
+  int neighbours = 30;            // k of the PCA neighbourhood
+  double neighbour_radius = 1.0;  // metres; farther neighbours are ignored
+  int min_neighbours = 6;
+  double linearity_threshold = 0.65;   // (l1 - l2) / l1
+  double planarity_threshold = 0.65;   // (l2 - l3) / l1
+  double curvature_threshold = 0.12;   // l3 / (l1 + l2 + l3)
+  double vertical_cos = 0.8;     // |dir . z| above: vertical
+  double horizontal_cos = 0.3;   // |dir . z| below: horizontal
+  // Per-class downsampling of the registration source (MULLS keeps few ground points).
+  double ground_voxel = 1.0;
+  double planar_voxel = 0.5;
+  double linear_voxel = 0.3;
+  double vertex_voxel = 0.6;
+};
+
+struct RegistrationConfig {
+  int max_iterations = 12;
+  double converged_translation = 1e-4;  // metres
+  double converged_rotation = 1e-4;     // radians
+  double initial_threshold = 1.0;  // metres, correspondence distance before the adaptive threshold knows better
+  double min_threshold = 0.15;     // metres
+  double max_threshold = 2.0;      // metres
+  double degeneracy_ratio = 2e-3;  // smallest / largest eigenvalue of the normal matrix
+  std::size_t min_correspondences = 30;
+  double min_inlier_ratio = 0.35;  // correspondences per feature; fewer: registered to the wrong place
+  double max_correction_translation = 2.0;  // metres away from the prediction: lost
+  double max_correction_rotation_deg = 30.0;
+  double vertex_weight = 0.5;  // point-to-point residuals are the least informative
+  // Horizontal "lines" of a sparse scan are often strips of a wall at the edge
+  // of the view (their eigenvalues say linear); they get a small say.
+  double beam_weight = 0.0;
+  double max_normal_angle_deg = 30.0;  // source and map directions must agree this well
+};
+
+struct LocalMapConfig {
+  double voxel_size = 0.5;          // metres
+  int max_points_per_voxel = 6;     // per voxel, all classes together
+  double radius = 60.0;             // metres around the sensor
+  int max_frame_age = 150;          // frames; older map points are dropped
+  double refined_rate_alpha = 0.3;  // paper: largest rate of direction-refined points in the map
+};
+
+struct LidarOdometryConfig {
+  PreprocessConfig preprocess;
+  GroundConfig ground;
+  FeatureConfig features;
+  RegistrationConfig registration;
+  LocalMapConfig local_map;
+  bool deskew = true;
+  int recent_frames = 4;       // frames whose features the fusion framework sees
+  double max_time_gap = 0.5;   // seconds between scans; longer: motion unknown
+};
+
+// Reads the `lidar` section of a YAML file (absent: defaults). Unknown or
+// malformed keys throw lvslam::Error naming the file and the key.
+LidarOdometryConfig loadLidarOdometryConfig(const YamlConfig& root);
+// Throws lvslam::Error(where, ...) on values that cannot work (negative sizes...).
+void validate(const LidarOdometryConfig& config, const std::string& where);
+
+}  // namespace lvslam::lidar

@@ -1,0 +1,135 @@
+#include "lvslam/lidar/multi_metric_icp.h"
+
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+namespace lvslam::lidar {
+
+namespace {
+
+// Rotation columns of the Jacobian grow with range; this length (metres)
+// makes translation and rotation comparable before judging degeneracy.
+constexpr double kRotationScale = 10.0;
+
+NormalEquations& operator+=(NormalEquations& a, const NormalEquations& b) {
+  a.H += b.H;
+  a.b += b.b;
+  a.squared_error += b.squared_error;
+  a.count += b.count;
+  return a;
+}
+
+// Adds one residual r = A (q - m) with A = n^T (plane), I - d d^T (line) or
+// I (point); dq = d q / d xi for q = T exp(xi) p (body-frame perturbation, so
+// the rotation columns scale with the range, not with the distance travelled).
+template <int Rows>
+void addResidual(NormalEquations& eq, const Eigen::Matrix<double, Rows, 3>& A, const Eigen::Vector3d& q,
+                 const Eigen::Matrix<double, 3, 6>& dq, const Eigen::Vector3d& m, double kernel,
+                 double class_weight) {
+  const Eigen::Matrix<double, Rows, 1> r = A * (q - m);
+  const Eigen::Matrix<double, Rows, 6> J = A * dq;
+  // Geman-McClure weight (kiss-icp uses the same kernel).
+  const double r_sq = r.squaredNorm();
+  const double k_sq = kernel * kernel;
+  const double w = class_weight * (k_sq / (k_sq + r_sq)) * (k_sq / (k_sq + r_sq));
+  eq.H.noalias() += w * J.transpose() * J;
+  eq.b.noalias() += w * J.transpose() * r;
+  eq.squared_error += r_sq;
+  ++eq.count;
+}
+
+void addCorrespondence(NormalEquations& eq, const FeaturePoint& fp, const Eigen::Isometry3d& T, const LocalMap& map,
+                       float threshold, double kernel, double min_cos, const RegistrationConfig& config) {
+  const Eigen::Vector3d p = fp.p.cast<double>();
+  const Eigen::Vector3d q = T * p;
+  if (fp.cls == FeatureClass::kBeam && config.beam_weight <= 0.0) return;
+  const MapPoint* m = map.nearest(q.cast<float>(), fp.cls, threshold);
+  if (m == nullptr) return;
+  // Points across an edge share a class but not a surface: their directions disagree.
+  const Eigen::Vector3d source_direction = T.linear() * fp.direction.cast<double>();
+  if (fp.cls != FeatureClass::kVertex && std::abs(source_direction.dot(m->direction.cast<double>())) < min_cos) return;
+  Eigen::Matrix<double, 3, 6> dq;
+  dq << T.linear(), -T.linear() * skew(p);
+  const Eigen::Vector3d mp = m->p.cast<double>();
+  if (isPlanar(fp.cls)) {
+    addResidual<1>(eq, m->direction.cast<double>().transpose(), q, dq, mp, kernel, 1.0);
+  } else if (isLinear(fp.cls)) {
+    // A fusion-refined direction (paper: d_v_mean) is preferred to a raw PCA one.
+    const bool use_source = fp.refined && !m->refined;
+    const Eigen::Vector3d d = use_source ? source_direction : Eigen::Vector3d(m->direction.cast<double>());
+    const Eigen::Matrix3d A = Eigen::Matrix3d::Identity() - d * d.transpose();
+    addResidual<3>(eq, A, q, dq, mp, kernel, fp.cls == FeatureClass::kBeam ? config.beam_weight : 1.0);
+  } else {
+    addResidual<3>(eq, Eigen::Matrix3d::Identity(), q, dq, mp, kernel, config.vertex_weight);
+  }
+}
+
+NormalEquations buildNormalEquations(const std::vector<FeaturePoint>& source, const LocalMap& map,
+                                     const Eigen::Isometry3d& T, double threshold, const RegistrationConfig& config) {
+  const double kernel = threshold / 3.0;
+  const auto th = static_cast<float>(threshold);
+  const double min_cos = std::cos(config.max_normal_angle_deg * M_PI / 180.0);
+  return tbb::parallel_deterministic_reduce(
+      tbb::blocked_range<std::size_t>(0, source.size(), 128), NormalEquations{},
+      [&](const tbb::blocked_range<std::size_t>& range, NormalEquations eq) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i)
+          addCorrespondence(eq, source[i], T, map, th, kernel, min_cos, config);
+        return eq;
+      },
+      [](NormalEquations a, const NormalEquations& b) { return a += b; });
+}
+
+}  // namespace
+
+Vector6d solveWellConditioned(const NormalEquations& eq, double degeneracy_ratio, bool& degenerate,
+                              double& condition) {
+  Vector6d scale;
+  scale << 1, 1, 1, 1.0 / kRotationScale, 1.0 / kRotationScale, 1.0 / kRotationScale;
+  const Matrix6d H = scale.asDiagonal() * eq.H * scale.asDiagonal();
+  const Vector6d b = scale.asDiagonal() * eq.b;
+  Eigen::SelfAdjointEigenSolver<Matrix6d> solver(H);
+  const Vector6d lambda = solver.eigenvalues();  // ascending
+  const double largest = lambda(5);
+  degenerate = false;
+  condition = largest > 0 ? lambda(0) / largest : 0.0;
+  if (!(largest > 0) || !std::isfinite(largest)) {
+    degenerate = true;
+    return Vector6d::Zero();
+  }
+  Vector6d x_scaled = Vector6d::Zero();
+  for (int i = 0; i < 6; ++i) {
+    if (lambda(i) < degeneracy_ratio * largest) {
+      degenerate = true;
+      continue;
+    }
+    const Vector6d v = solver.eigenvectors().col(i);
+    x_scaled -= v * (v.dot(b) / lambda(i));
+  }
+  return scale.asDiagonal() * x_scaled;
+}
+
+IcpResult registerMultiMetric(const std::vector<FeaturePoint>& source, const LocalMap& map,
+                              const Eigen::Isometry3d& T_world_lidar_guess, double threshold,
+                              const RegistrationConfig& config) {
+  IcpResult result;
+  result.T_world_lidar = T_world_lidar_guess;
+  for (int iteration = 0; iteration < config.max_iterations; ++iteration) {
+    const NormalEquations eq = buildNormalEquations(source, map, result.T_world_lidar, threshold, config);
+    result.iterations = iteration + 1;
+    result.correspondences = eq.count;
+    result.rms_residual = eq.count > 0 ? std::sqrt(eq.squared_error / eq.count) : 0.0;
+    if (eq.count < config.min_correspondences) return result;
+    const Vector6d dx = solveWellConditioned(eq, config.degeneracy_ratio, result.degenerate, result.condition);
+    result.T_world_lidar = result.T_world_lidar * expSE3(dx);
+    if (dx.head<3>().norm() < config.converged_translation && dx.tail<3>().norm() < config.converged_rotation) {
+      result.converged = true;
+      break;
+    }
+  }
+  return result;
+}
+
+}  // namespace lvslam::lidar
