@@ -1,5 +1,6 @@
-// `lvslam run`: runs a SLAM mode over a sequence folder, writes its trajectory
-// and, when the sequence has ground truth, prints the accuracy.
+// `lvslam run`: runs a SLAM mode over a recording (a sequence folder, or ROS1
+// bags with a sensor preset), writes its trajectory and, when there is ground
+// truth, prints the accuracy.
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -14,7 +15,7 @@
 #include "lvslam/core/yaml_config.h"
 #include "lvslam/eval/eval_report.h"
 #include "lvslam/eval/evaluate.h"
-#include "lvslam/io/sequence_reader.h"
+#include "lvslam/io/recording.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/lidar/lidar_odometry.h"
 
@@ -23,7 +24,7 @@ namespace lvslam::apps {
 namespace {
 
 struct RunArgs {
-  std::string sequence_dir;
+  RecordingRequest input;
   std::string mode = "lidar";
   std::string out_dir;
   std::string config_path;
@@ -35,25 +36,28 @@ struct RunOutput {
   std::string summary;
 };
 
-RunOutput runLidarMode(const SequenceReader& reader, const RunArgs& args) {
-  if (!reader.hasLidar())
-    throw Error(reader.directory() + "/sequence.yaml", "mode lidar needs a sequence with a 'lidar' section");
+RunOutput runLidarMode(Recording& recording, const RunArgs& args) {
+  if (!recording.source->hasLidar()) throw Error(recording.name, "mode lidar needs a recording with a LiDAR");
   const lidar::LidarOdometryConfig config =
       args.config_path.empty() ? lidar::LidarOdometryConfig{}
                                : lidar::loadLidarOdometryConfig(YamlConfig::loadFile(args.config_path));
   lidar::LidarOdometry odometry(config);
   RunOutput output;
   std::map<std::string, int> statuses;
+  std::size_t scans = 0;
   const auto start = std::chrono::steady_clock::now();
-  for (std::size_t i = 0; i < reader.lidarFiles().size(); ++i) {
-    const lidar::OdometryResult result = odometry.process(reader.loadScan(i));
+  while (auto data = recording.source->next()) {
+    const auto* scan = std::get_if<LidarScan>(&*data);
+    if (!scan) continue;  // images are not used in this mode
+    const lidar::OdometryResult result = odometry.process(*scan);
+    ++scans;
     ++statuses[lidar::statusName(result.status)];
     if (result.status != lidar::OdometryStatus::kRejected)
       output.T_world_lidar.push_back({result.timestamp, result.T_world_lidar});
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  output.summary = fmt::format("lidar odometry: {} scans in {:.2f} s ({:.1f} scans/s, including reading)",
-                               reader.lidarFiles().size(), seconds, reader.lidarFiles().size() / std::max(seconds, 1e-9));
+  output.summary = fmt::format("lidar odometry: {} scans in {:.2f} s ({:.1f} scans/s, including reading)", scans,
+                               seconds, static_cast<double>(scans) / std::max(seconds, 1e-9));
   for (const auto& [name, count] : statuses) output.summary += fmt::format("; {} {}", name, count);
   return output;
 }
@@ -64,35 +68,35 @@ Trajectory transformed(const Trajectory& trajectory, const Eigen::Isometry3d& T_
   return out;
 }
 
-void printAccuracy(const SequenceReader& reader, const Trajectory& T_world_lidar) {
-  if (!reader.hasGroundTruth()) return;
-  const SequenceInfo& info = reader.info();
-  const bool gt_is_camera = info.groundtruth_frame.value_or(GroundTruthFrame::kCamera) == GroundTruthFrame::kCamera;
+void printAccuracy(const Recording& recording, const Trajectory& T_world_lidar) {
+  if (!recording.ground_truth) return;
+  const bool gt_is_camera = recording.ground_truth_frame == GroundTruthFrame::kCamera;
   // Compare like with like: the estimate in the frame the ground truth gives.
-  const Trajectory estimate =
-      gt_is_camera ? transformed(T_world_lidar, info.T_camera_lidar.inverse()) : T_world_lidar;
+  const Eigen::Isometry3d T_lidar_camera = recording.source->calibration().T_camera_lidar.inverse();
+  const Trajectory estimate = gt_is_camera ? transformed(T_world_lidar, T_lidar_camera) : T_world_lidar;
   eval::EvalOptions options;
-  options.gt_name = reader.directory() + "/groundtruth.txt";
+  options.gt_name = recording.ground_truth_path;
   options.est_name = gt_is_camera ? "estimate (camera frame)" : "estimate (lidar frame)";
-  std::cout << eval::formatSummary(eval::evaluate(reader.groundTruth(), estimate, options));
+  std::cout << eval::formatSummary(eval::evaluate(*recording.ground_truth, estimate, options));
 }
 
 int runRun(const RunArgs& args) {
-  const SequenceReader reader(args.sequence_dir);
+  Recording recording = openRecording(args.input);
   if (args.mode != "lidar")
     throw Error("lvslam run", "mode '" + args.mode + "' is not yet available (available: lidar)");
-  const RunOutput output = runLidarMode(reader, args);
+  const RunOutput output = runLidarMode(recording, args);
   std::filesystem::create_directories(args.out_dir);
   // With a camera the trajectory is the camera's (docs/sequence-format.md).
-  const Trajectory written = reader.hasCamera()
-                                 ? transformed(output.T_world_lidar, reader.info().T_camera_lidar.inverse())
-                                 : output.T_world_lidar;
+  const bool has_camera = recording.source->hasCamera();
+  const Trajectory written =
+      has_camera ? transformed(output.T_world_lidar, recording.source->calibration().T_camera_lidar.inverse())
+                 : output.T_world_lidar;
   const std::string path = (std::filesystem::path(args.out_dir) / "trajectory.tum").string();
   writeTum(path, written);
   std::cout << output.summary << "\n"
-            << "wrote " << path << " (" << (reader.hasCamera() ? "T_world_camera" : "T_world_lidar") << ", "
+            << "wrote " << path << " (" << (has_camera ? "T_world_camera" : "T_world_lidar") << ", "
             << written.size() << " poses)\n";
-  printAccuracy(reader, output.T_world_lidar);
+  printAccuracy(recording, output.T_world_lidar);
   return 0;
 }
 
@@ -103,7 +107,13 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
       "run", "Run SLAM over a sequence folder; writes OUT/trajectory.tum and prints the accuracy when the "
              "sequence has ground truth.");
   auto args = std::make_shared<RunArgs>();
-  cmd->add_option("--sequence", args->sequence_dir, "Sequence folder (docs/sequence-format.md)")->required();
+  auto* sequence = cmd->add_option("--sequence", args->input.sequence_dir, "Sequence folder (docs/sequence-format.md)");
+  auto* bags = cmd->add_option("--bag", args->input.bag_files, "ROS1 bag files of one recording (needs --preset)");
+  sequence->excludes(bags);
+  cmd->add_option("--preset", args->input.preset, "Sensor preset for bags: a name in config/ (m2dgr) or a file");
+  cmd->add_option("--lidar-topic", args->input.lidar_topic, "LiDAR topic of the bags (overrides the preset)");
+  cmd->add_option("--camera-topic", args->input.camera_topic, "Camera topic of the bags (overrides the preset)");
+  cmd->add_option("--groundtruth", args->input.groundtruth_file, "TUM ground truth for bags (frame from the preset)");
   cmd->add_option("--mode", args->mode, "lidar (LiDAR odometry only); visual and fused: not yet available")
       ->default_val("lidar")
       ->check(CLI::IsMember({"lidar", "visual", "fused"}));
