@@ -1,0 +1,130 @@
+#include "lvslam/visual/data/visual_map.h"
+
+#include <algorithm>
+#include <string>
+
+#include "lvslam/core/error.h"
+
+namespace lvslam::visual {
+
+namespace {
+// Works for const and non-const maps alike.
+template <typename Map>
+auto& find(Map& items, int id, const char* what) {
+  const auto it = items.find(id);
+  if (it == items.end()) throw Error("VisualMap", std::string("unknown ") + what + " id " + std::to_string(id));
+  return it->second;
+}
+}  // namespace
+
+int VisualMap::addKeyframe(Keyframe keyframe) {
+  keyframe.id = next_keyframe_id_++;
+  keyframe.point_landmark.assign(keyframe.features.keypoints.size(), -1);
+  keyframe.line_landmark.assign(keyframe.features.lines.size(), -1);
+  const int id = keyframe.id;
+  keyframes_.emplace(id, std::move(keyframe));
+  return id;
+}
+
+int VisualMap::addPointLandmark(const Eigen::Vector3d& p_world, const cv::Mat& descriptor) {
+  if (!p_world.allFinite()) throw Error("VisualMap", "point landmark is not finite");
+  PointLandmark p;
+  p.id = next_point_id_++;
+  p.p_world = p_world;
+  p.descriptor = descriptor.clone();
+  points_.emplace(p.id, std::move(p));
+  return next_point_id_ - 1;
+}
+
+int VisualMap::addLineLandmark(const PluckerLine& line_world, const Eigen::Vector3d& start_world,
+                               const Eigen::Vector3d& end_world, const cv::Mat& descriptor) {
+  if (!line_world.isValid(1e-6)) throw Error("VisualMap", "line landmark is not a valid Plücker line");
+  LineLandmark l;
+  l.id = next_line_id_++;
+  l.line_world = line_world;
+  l.start_world = start_world;
+  l.end_world = end_world;
+  l.descriptor = descriptor.clone();
+  lines_.emplace(l.id, std::move(l));
+  return next_line_id_ - 1;
+}
+
+template <typename Landmark>
+void VisualMap::addObservation(Landmark& landmark, std::vector<int> Keyframe::*table, int keyframe, int index) {
+  Keyframe& kf = find(keyframes_, keyframe, "keyframe");
+  std::vector<int>& slots = kf.*table;
+  if (index < 0 || static_cast<size_t>(index) >= slots.size()) {
+    throw Error("VisualMap", "feature index " + std::to_string(index) + " out of range in keyframe " +
+                                 std::to_string(keyframe));
+  }
+  if (slots[index] != -1) {
+    throw Error("VisualMap", "feature " + std::to_string(index) + " of keyframe " + std::to_string(keyframe) +
+                                 " already observes landmark " + std::to_string(slots[index]));
+  }
+  for (const Observation& o : landmark.observations) {
+    if (o.keyframe == keyframe) {
+      throw Error("VisualMap", "landmark " + std::to_string(landmark.id) + " is already observed by keyframe " +
+                                   std::to_string(keyframe));
+    }
+  }
+  for (const Observation& o : landmark.observations) covisibility_.addWeight(keyframe, o.keyframe, 1);
+  landmark.observations.push_back({keyframe, index});
+  slots[index] = landmark.id;
+}
+
+template <typename Landmark>
+void VisualMap::removeObservation(Landmark& landmark, std::vector<int> Keyframe::*table, int keyframe) {
+  auto& obs = landmark.observations;
+  const auto it = std::find_if(obs.begin(), obs.end(), [&](const Observation& o) { return o.keyframe == keyframe; });
+  if (it == obs.end()) return;
+  (find(keyframes_, keyframe, "keyframe").*table)[it->index] = -1;
+  obs.erase(it);
+  for (const Observation& o : obs) covisibility_.addWeight(keyframe, o.keyframe, -1);
+}
+
+void VisualMap::addPointObservation(int point, int keyframe, int index) {
+  addObservation(find(points_, point, "point"), &Keyframe::point_landmark, keyframe, index);
+}
+void VisualMap::addLineObservation(int line, int keyframe, int index) {
+  addObservation(find(lines_, line, "line"), &Keyframe::line_landmark, keyframe, index);
+}
+void VisualMap::removePointObservation(int point, int keyframe) {
+  removeObservation(find(points_, point, "point"), &Keyframe::point_landmark, keyframe);
+}
+void VisualMap::removeLineObservation(int line, int keyframe) {
+  removeObservation(find(lines_, line, "line"), &Keyframe::line_landmark, keyframe);
+}
+
+void VisualMap::removePoint(int point) {
+  PointLandmark& p = find(points_, point, "point");
+  while (!p.observations.empty()) removePointObservation(point, p.observations.back().keyframe);
+  p.bad = true;
+}
+
+void VisualMap::removeLine(int line) {
+  LineLandmark& l = find(lines_, line, "line");
+  while (!l.observations.empty()) removeLineObservation(line, l.observations.back().keyframe);
+  l.bad = true;
+}
+
+void VisualMap::setFusionDirection(int line, const Eigen::Vector3d& d_fu) {
+  if (!d_fu.allFinite() || !(d_fu.norm() > 0.0)) throw Error("VisualMap", "fusion direction must be finite and non-zero");
+  find(lines_, line, "line").fusion_direction = d_fu.normalized();
+}
+
+Keyframe& VisualMap::keyframe(int id) { return find(keyframes_, id, "keyframe"); }
+const Keyframe& VisualMap::keyframe(int id) const { return find(keyframes_, id, "keyframe"); }
+PointLandmark& VisualMap::point(int id) { return find(points_, id, "point"); }
+const PointLandmark& VisualMap::point(int id) const { return find(points_, id, "point"); }
+LineLandmark& VisualMap::line(int id) { return find(lines_, id, "line"); }
+const LineLandmark& VisualMap::line(int id) const { return find(lines_, id, "line"); }
+
+std::vector<int> VisualMap::localWindow(int keyframe, size_t n) const {
+  if (!hasKeyframe(keyframe)) throw Error("VisualMap", "unknown keyframe id " + std::to_string(keyframe));
+  std::vector<int> window{keyframe};
+  if (n <= 1) return window;
+  for (const int id : covisibility_.bestNeighbours(keyframe, n - 1)) window.push_back(id);
+  return window;
+}
+
+}  // namespace lvslam::visual

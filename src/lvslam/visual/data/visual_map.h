@@ -1,0 +1,64 @@
+#pragma once
+// The visual subsystem's map: keyframes, point and line landmarks, the
+// observations between them and the covisibility graph they induce. Ids are
+// assigned here and never reused; iteration order is by id (deterministic).
+#include <map>
+#include <vector>
+
+#include "lvslam/visual/data/covisibility_graph.h"
+#include "lvslam/visual/data/keyframe.h"
+#include "lvslam/visual/data/landmarks.h"
+
+namespace lvslam::visual {
+
+class VisualMap {
+ public:
+  // Takes the keyframe, assigns its id and sizes its landmark tables to its features.
+  int addKeyframe(Keyframe keyframe);
+  int addPointLandmark(const Eigen::Vector3d& p_world, const cv::Mat& descriptor);
+  int addLineLandmark(const PluckerLine& line_world, const Eigen::Vector3d& start_world,
+                      const Eigen::Vector3d& end_world, const cv::Mat& descriptor);
+
+  // Feature `index` of `keyframe` observes the landmark. Throws lvslam::Error
+  // on unknown ids, an index out of range or a feature that already observes
+  // a landmark.
+  void addPointObservation(int point, int keyframe, int index);
+  void addLineObservation(int line, int keyframe, int index);
+  void removePointObservation(int point, int keyframe);
+  void removeLineObservation(int line, int keyframe);
+  // Marks the landmark bad and drops all its observations.
+  void removePoint(int point);
+  void removeLine(int line);
+
+  void setFusionDirection(int line, const Eigen::Vector3d& d_fu);
+
+  Keyframe& keyframe(int id);
+  const Keyframe& keyframe(int id) const;
+  PointLandmark& point(int id);
+  const PointLandmark& point(int id) const;
+  LineLandmark& line(int id);
+  const LineLandmark& line(int id) const;
+  bool hasKeyframe(int id) const { return keyframes_.count(id) != 0; }
+
+  const std::map<int, Keyframe>& keyframes() const { return keyframes_; }
+  const std::map<int, PointLandmark>& points() const { return points_; }
+  const std::map<int, LineLandmark>& lines() const { return lines_; }
+  const CovisibilityGraph& covisibility() const { return covisibility_; }
+
+  // The keyframe and its n - 1 most covisible neighbours (ORB-SLAM's local window).
+  std::vector<int> localWindow(int keyframe, size_t n) const;
+
+ private:
+  template <typename Landmark>
+  void addObservation(Landmark& landmark, std::vector<int> Keyframe::*table, int keyframe, int index);
+  template <typename Landmark>
+  void removeObservation(Landmark& landmark, std::vector<int> Keyframe::*table, int keyframe);
+
+  std::map<int, Keyframe> keyframes_;
+  std::map<int, PointLandmark> points_;
+  std::map<int, LineLandmark> lines_;
+  CovisibilityGraph covisibility_;
+  int next_keyframe_id_ = 0, next_point_id_ = 0, next_line_id_ = 0;
+};
+
+}  // namespace lvslam::visual

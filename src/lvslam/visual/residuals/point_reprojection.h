@@ -1,0 +1,73 @@
+#pragma once
+// Point reprojection residual e = sqrt_info (pi(K, T_cw p_w) - x) (ORB-SLAM /
+// Structure PLP point edge), with analytic Jacobians for the left SE3 pose
+// update and the world point.
+#include <ceres/sized_cost_function.h>
+
+#include <Eigen/Core>
+
+#include "lvslam/core/se3.h"
+#include "lvslam/visual/residuals/pose_block.h"
+
+namespace lvslam::visual {
+
+struct PointReprojection {
+  // False when the point is not in front of the camera or input is not finite.
+  static bool evaluate(const Eigen::Matrix3d& R_cw, const Eigen::Vector3d& t_cw,
+                       const Eigen::Vector3d& p_w, const Eigen::Vector2d& observed,
+                       const PinholeIntrinsics& K, double sqrt_info, Eigen::Vector2d& residual,
+                       Eigen::Matrix<double, 2, 6>* J_pose, Eigen::Matrix<double, 2, 3>* J_point) {
+    const Eigen::Vector3d p_c = R_cw * p_w + t_cw;
+    if (!(p_c.z() > 1e-6) || !p_c.allFinite()) return false;
+    const double iz = 1.0 / p_c.z();
+    residual = sqrt_info * Eigen::Vector2d(K.fx * p_c.x() * iz + K.cx - observed.x(),
+                                           K.fy * p_c.y() * iz + K.cy - observed.y());
+    if (!J_pose && !J_point) return true;
+    Eigen::Matrix<double, 2, 3> J_proj;
+    J_proj << K.fx * iz, 0.0, -K.fx * p_c.x() * iz * iz, 0.0, K.fy * iz, -K.fy * p_c.y() * iz * iz;
+    J_proj *= sqrt_info;
+    if (J_pose) {
+      // d p_c / d(rho, phi) = [I, -[p_c]x] for T <- exp(delta) T.
+      J_pose->leftCols<3>() = J_proj;
+      J_pose->rightCols<3>() = -J_proj * skew(p_c);
+    }
+    if (J_point) *J_point = J_proj * R_cw;
+    return true;
+  }
+};
+
+// Blocks: pose [t, q] (Se3LeftManifold convention), point p_w (3).
+class PointReprojectionCost final : public ceres::SizedCostFunction<2, kPoseBlockSize, 3> {
+ public:
+  PointReprojectionCost(const Eigen::Vector2d& observed, const PinholeIntrinsics& K, double sqrt_info)
+      : observed_(observed), K_(K), sqrt_info_(sqrt_info) {}
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const Eigen::Isometry3d T = fromPoseBlock(parameters[0]);
+    const Eigen::Vector3d p_w = Eigen::Map<const Eigen::Vector3d>(parameters[1]);
+    Eigen::Vector2d r;
+    Eigen::Matrix<double, 2, 6> J_pose;
+    Eigen::Matrix<double, 2, 3> J_point;
+    const bool want_pose = jacobians && jacobians[0];
+    const bool want_point = jacobians && jacobians[1];
+    if (!PointReprojection::evaluate(T.linear(), T.translation(), p_w, observed_, K_, sqrt_info_, r,
+                                     want_pose ? &J_pose : nullptr, want_point ? &J_point : nullptr)) {
+      return false;
+    }
+    Eigen::Map<Eigen::Vector2d>{residuals} = r;
+    if (want_pose) {
+      Eigen::Map<Eigen::Matrix<double, 2, kPoseBlockSize, Eigen::RowMajor>> J(jacobians[0]);
+      J.leftCols<6>() = J_pose;
+      J.col(6).setZero();
+    }
+    if (want_point) Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>>{jacobians[1]} = J_point;
+    return true;
+  }
+
+ private:
+  Eigen::Vector2d observed_;
+  PinholeIntrinsics K_;
+  double sqrt_info_;
+};
+
+}  // namespace lvslam::visual

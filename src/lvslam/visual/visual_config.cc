@@ -1,0 +1,94 @@
+#include "lvslam/visual/visual_config.h"
+
+#include <algorithm>
+#include <initializer_list>
+#include <string>
+
+#include "lvslam/core/error.h"
+
+namespace lvslam::visual {
+
+namespace {
+
+void rejectUnknownKeys(const YamlConfig& node, std::initializer_list<const char*> known) {
+  if (!node.node().IsMap()) node.fail("must be a map");
+  for (const auto& item : node.node()) {
+    const std::string key = item.first.as<std::string>();
+    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
+      node.fail("unknown key '" + key + "'");
+    }
+  }
+}
+
+void loadFeatures(const YamlConfig& n, FeatureExtractorConfig& c) {
+  if (const auto orb = n.find("orb")) {
+    rejectUnknownKeys(*orb, {"max_features", "scale_factor", "num_levels", "fast_threshold", "grid_cell_size"});
+    c.orb.max_features = orb->getInt("max_features", c.orb.max_features);
+    c.orb.scale_factor = orb->getDouble("scale_factor", c.orb.scale_factor);
+    c.orb.num_levels = orb->getInt("num_levels", c.orb.num_levels);
+    c.orb.fast_threshold = orb->getInt("fast_threshold", c.orb.fast_threshold);
+    c.orb.grid_cell_size = orb->getInt("grid_cell_size", c.orb.grid_cell_size);
+  }
+  if (const auto lines = n.find("lines")) {
+    rejectUnknownKeys(*lines, {"enabled", "scale", "density_threshold", "min_length_ratio", "max_lines"});
+    c.extract_lines = lines->getBool("enabled", c.extract_lines);
+    c.lines.scale = lines->getDouble("scale", c.lines.scale);
+    c.lines.density_threshold = lines->getDouble("density_threshold", c.lines.density_threshold);
+    c.lines.min_length_ratio = lines->getDouble("min_length_ratio", c.lines.min_length_ratio);
+    c.lines.max_lines = lines->getInt("max_lines", c.lines.max_lines);
+  }
+}
+
+void loadOptimisation(const YamlConfig& n, VisualConfig& c) {
+  if (const auto pose = n.find("pose")) {
+    rejectUnknownKeys(*pose, {"rounds", "iterations_per_round", "chi2_point", "chi2_line", "min_inliers"});
+    c.pose.rounds = pose->getInt("rounds", c.pose.rounds);
+    c.pose.iterations_per_round = pose->getInt("iterations_per_round", c.pose.iterations_per_round);
+    c.pose.chi2_point = pose->getDouble("chi2_point", c.pose.chi2_point);
+    c.pose.chi2_line = pose->getDouble("chi2_line", c.pose.chi2_line);
+    c.pose.min_inliers = pose->getInt("min_inliers", c.pose.min_inliers);
+    if (c.pose.rounds < 1 || c.pose.iterations_per_round < 1) pose->fail("rounds and iterations must be >= 1");
+  }
+  if (const auto ba = n.find("bundle_adjustment")) {
+    rejectUnknownKeys(*ba, {"window_size", "first_stage_iterations", "second_stage_iterations", "direction_weight",
+                            "direction_huber_delta", "use_direction_residual"});
+    LocalWindowConfig& w = c.local_window;
+    const int window = ba->getInt("window_size", static_cast<int>(w.window_size));
+    if (window < 2) ba->fail("window_size must be >= 2");
+    w.window_size = static_cast<size_t>(window);
+    w.ba.first_stage_iterations = ba->getInt("first_stage_iterations", w.ba.first_stage_iterations);
+    w.ba.second_stage_iterations = ba->getInt("second_stage_iterations", w.ba.second_stage_iterations);
+    w.ba.direction_weight = ba->getDouble("direction_weight", w.ba.direction_weight);
+    w.ba.direction_huber_delta = ba->getDouble("direction_huber_delta", w.ba.direction_huber_delta);
+    w.ba.use_direction_residual = ba->getBool("use_direction_residual", w.ba.use_direction_residual);
+    if (w.ba.first_stage_iterations < 1 || w.ba.second_stage_iterations < 0) ba->fail("iterations out of range");
+    if (!(w.ba.direction_weight >= 0.0) || !(w.ba.direction_huber_delta > 0.0)) ba->fail("direction terms must be positive");
+  }
+}
+
+}  // namespace
+
+VisualConfig loadVisualConfig(const YamlConfig& section) {
+  VisualConfig c;
+  rejectUnknownKeys(section, {"orb", "lines", "pose", "bundle_adjustment", "initializer"});
+  loadFeatures(section, c.features);
+  loadOptimisation(section, c);
+  if (const auto init = section.find("initializer")) {
+    rejectUnknownKeys(*init, {"min_parallax_deg", "min_triangulated", "min_depth_hints"});
+    c.initializer.min_parallax_deg = init->getDouble("min_parallax_deg", c.initializer.min_parallax_deg);
+    c.initializer.min_triangulated = init->getInt("min_triangulated", c.initializer.min_triangulated);
+    c.initializer.min_depth_hints = init->getInt("min_depth_hints", c.initializer.min_depth_hints);
+  }
+  // The extractors and the initializer validate the rest when constructed;
+  // do it now so a bad file fails at load time, naming the file.
+  try {
+    OrbExtractor orb(c.features.orb);
+    LineExtractor lines(c.features.lines);
+    TwoViewInitializer init(c.initializer, PinholeIntrinsics{});
+  } catch (const Error& e) {
+    section.fail(e.what());
+  }
+  return c;
+}
+
+}  // namespace lvslam::visual

@@ -1,0 +1,27 @@
+#pragma once
+// Every tunable of the visual subsystem in one plain struct, and its YAML
+// section ("visual:" in config/*.yaml). Absent keys keep the defaults;
+// unknown keys and invalid values are lvslam::Errors naming file and key.
+#include "lvslam/core/yaml_config.h"
+#include "lvslam/visual/feature/feature_extractor.h"
+#include "lvslam/visual/initialize/two_view_initializer.h"
+#include "lvslam/visual/match/line_matcher.h"
+#include "lvslam/visual/match/point_matcher.h"
+#include "lvslam/visual/optimize/local_window_adjustment.h"
+#include "lvslam/visual/optimize/pose_optimization.h"
+
+namespace lvslam::visual {
+
+struct VisualConfig {
+  FeatureExtractorConfig features;
+  PointMatcherConfig point_matching;
+  LineMatcherConfig line_matching;
+  PoseOptimizationConfig pose;
+  LocalWindowConfig local_window;  // includes the BA settings
+  TwoViewInitializerConfig initializer;
+};
+
+// `section` is the node of the "visual" key.
+VisualConfig loadVisualConfig(const YamlConfig& section);
+
+}  // namespace lvslam::visual

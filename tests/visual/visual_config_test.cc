@@ -1,0 +1,49 @@
+#include "lvslam/visual/visual_config.h"
+
+#include <gtest/gtest.h>
+
+#include "lvslam/core/error.h"
+#include "support/temp_dir.h"
+
+namespace lvslam::visual {
+namespace {
+
+VisualConfig load(const std::string& text) {
+  return loadVisualConfig(YamlConfig::loadString(text, "test.yaml").at("visual"));
+}
+
+TEST(VisualConfig, AbsentKeysKeepDefaultsAndPresentOnesOverride) {
+  const VisualConfig defaults = load("visual: {}\n");
+  EXPECT_EQ(defaults.features.orb.max_features, OrbExtractorConfig{}.max_features);
+  const VisualConfig c = load(
+      "visual:\n"
+      "  orb: {max_features: 800, num_levels: 6}\n"
+      "  lines: {enabled: false, min_length_ratio: 0.1}\n"
+      "  pose: {rounds: 3}\n"
+      "  bundle_adjustment: {window_size: 7, direction_weight: 200.0, use_direction_residual: false}\n"
+      "  initializer: {min_parallax_deg: 2.0}\n");
+  EXPECT_EQ(c.features.orb.max_features, 800);
+  EXPECT_EQ(c.features.orb.num_levels, 6);
+  EXPECT_FALSE(c.features.extract_lines);
+  EXPECT_DOUBLE_EQ(c.features.lines.min_length_ratio, 0.1);
+  EXPECT_EQ(c.pose.rounds, 3);
+  EXPECT_EQ(c.local_window.window_size, 7u);
+  EXPECT_DOUBLE_EQ(c.local_window.ba.direction_weight, 200.0);
+  EXPECT_FALSE(c.local_window.ba.use_direction_residual);
+  EXPECT_DOUBLE_EQ(c.initializer.min_parallax_deg, 2.0);
+}
+
+TEST(VisualConfig, BadValuesAndUnknownKeysNameTheKey) {
+  const std::string typo = lvslam::testing::errorMessageOf([] { load("visual:\n  orb: {max_featurs: 10}\n"); });
+  EXPECT_NE(typo.find("max_featurs"), std::string::npos) << typo;
+  EXPECT_NE(typo.find("test.yaml"), std::string::npos) << typo;
+  EXPECT_THROW(load("visual:\n  orb: {scale_factor: 0.9}\n"), Error);
+  EXPECT_THROW(load("visual:\n  lines: {scale: 2.0}\n"), Error);
+  EXPECT_THROW(load("visual:\n  bundle_adjustment: {window_size: 1}\n"), Error);
+  EXPECT_THROW(load("visual:\n  pose: {rounds: 0}\n"), Error);
+  EXPECT_THROW(load("visual:\n  orb: {max_features: abc}\n"), Error);
+  EXPECT_THROW(load("visual: 3\n"), Error);
+}
+
+}  // namespace
+}  // namespace lvslam::visual

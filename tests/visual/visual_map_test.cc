@@ -1,0 +1,97 @@
+#include "lvslam/visual/data/visual_map.h"
+
+#include <gtest/gtest.h>
+
+#include "lvslam/core/error.h"
+
+namespace lvslam::visual {
+namespace {
+
+Keyframe keyframeWith(int num_points, int num_lines) {
+  Keyframe kf;
+  kf.features.keypoints.resize(num_points);
+  kf.features.lines.resize(num_lines);
+  return kf;
+}
+
+TEST(CovisibilityGraph, WeightsAreSymmetricAndSortedHeaviestFirst) {
+  CovisibilityGraph g;
+  g.addWeight(0, 1, 5);
+  g.addWeight(0, 2, 9);
+  g.addWeight(3, 0, 5);
+  EXPECT_EQ(g.weight(1, 0), 5);
+  EXPECT_EQ(g.neighbours(0), (std::vector<int>{2, 1, 3}));
+  EXPECT_EQ(g.neighbours(0, 6), (std::vector<int>{2}));
+  EXPECT_EQ(g.bestNeighbours(0, 2), (std::vector<int>{2, 1}));
+  g.addWeight(0, 2, -9);
+  EXPECT_EQ(g.weight(0, 2), 0);
+  EXPECT_EQ(g.neighbours(2), std::vector<int>{});
+  g.removeNode(0);
+  EXPECT_EQ(g.weight(1, 0), 0);
+  EXPECT_TRUE(g.neighbours(3).empty());
+}
+
+TEST(VisualMap, ObservationsBuildTheCovisibilityGraph) {
+  VisualMap map;
+  const int a = map.addKeyframe(keyframeWith(10, 3));
+  const int b = map.addKeyframe(keyframeWith(10, 3));
+  const int c = map.addKeyframe(keyframeWith(10, 3));
+  EXPECT_EQ(map.keyframe(a).point_landmark.size(), 10u);
+  std::vector<int> points;
+  for (int i = 0; i < 4; ++i) points.push_back(map.addPointLandmark(Eigen::Vector3d(i, 0, 5), cv::Mat()));
+  const int line = map.addLineLandmark(PluckerLine::fromPoints({0, 0, 5}, {1, 0, 5}), {0, 0, 5}, {1, 0, 5}, cv::Mat());
+  // a and b share 4 points and a line; b and c share 1 point.
+  for (int i = 0; i < 4; ++i) {
+    map.addPointObservation(points[i], a, i);
+    map.addPointObservation(points[i], b, i + 2);
+  }
+  map.addPointObservation(points[0], c, 7);
+  map.addLineObservation(line, a, 0);
+  map.addLineObservation(line, b, 2);
+  EXPECT_EQ(map.covisibility().weight(a, b), 5);
+  EXPECT_EQ(map.covisibility().weight(b, c), 1);
+  EXPECT_EQ(map.covisibility().weight(a, c), 1);
+  EXPECT_EQ(map.keyframe(b).point_landmark[3], points[1]);
+  EXPECT_EQ(map.keyframe(b).line_landmark[2], line);
+  EXPECT_EQ(map.localWindow(a, 2), (std::vector<int>{a, b}));
+  EXPECT_EQ(map.localWindow(b, 5), (std::vector<int>{b, a, c}));
+
+  map.removePointObservation(points[0], c);
+  EXPECT_EQ(map.covisibility().weight(b, c), 0);
+  EXPECT_EQ(map.keyframe(c).point_landmark[7], -1);
+  map.removeLine(line);
+  EXPECT_TRUE(map.line(line).bad);
+  EXPECT_TRUE(map.line(line).observations.empty());
+  EXPECT_EQ(map.keyframe(a).line_landmark[0], -1);
+  EXPECT_EQ(map.covisibility().weight(a, b), 4);
+}
+
+TEST(VisualMap, FusionDirectionIsStoredUnitAndFlagged) {
+  VisualMap map;
+  const int l = map.addLineLandmark(PluckerLine::fromPoints({0, 0, 5}, {1, 0, 5}), {0, 0, 5}, {1, 0, 5}, cv::Mat());
+  EXPECT_FALSE(map.line(l).fusion_direction.has_value());
+  EXPECT_FALSE(map.line(l).from_fusion);
+  map.setFusionDirection(l, Eigen::Vector3d(2, 0, 0));
+  EXPECT_TRUE(map.line(l).fusion_direction->isApprox(Eigen::Vector3d::UnitX()));
+  EXPECT_THROW(map.setFusionDirection(l, Eigen::Vector3d::Zero()), Error);
+}
+
+TEST(VisualMap, RejectsInconsistentObservations) {
+  VisualMap map;
+  const int kf = map.addKeyframe(keyframeWith(2, 0));
+  const int p = map.addPointLandmark(Eigen::Vector3d(0, 0, 1), cv::Mat());
+  const int q = map.addPointLandmark(Eigen::Vector3d(0, 1, 1), cv::Mat());
+  EXPECT_THROW(map.addPointObservation(p, kf, 2), Error);   // index out of range
+  EXPECT_THROW(map.addPointObservation(p, 99, 0), Error);   // unknown keyframe
+  EXPECT_THROW(map.addPointObservation(99, kf, 0), Error);  // unknown point
+  EXPECT_THROW(map.addLineObservation(0, kf, 0), Error);    // no lines
+  map.addPointObservation(p, kf, 0);
+  EXPECT_THROW(map.addPointObservation(q, kf, 0), Error);  // feature taken
+  EXPECT_THROW(map.addPointObservation(p, kf, 1), Error);  // keyframe already sees p
+  EXPECT_THROW(map.addPointLandmark(Eigen::Vector3d(NAN, 0, 0), cv::Mat()), Error);
+  EXPECT_THROW(map.addLineLandmark(PluckerLine{Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 0, 0)}, {}, {}, cv::Mat()), Error);
+  EXPECT_THROW(map.localWindow(42, 3), Error);
+}
+
+}  // namespace
+}  // namespace lvslam::visual
