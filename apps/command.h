@@ -13,6 +13,7 @@ using CommandAction = std::function<int()>;
 // One line per subcommand; main.cc calls each.
 void addEvalCommand(CLI::App& app, CommandAction& action);
 void addConvertCommand(CLI::App& app, CommandAction& action);
+void addSimulateCommand(CLI::App& app, CommandAction& action);
 void addRunCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace lvslam::apps

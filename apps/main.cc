@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   lvslam::apps::CommandAction action;
   lvslam::apps::addEvalCommand(app, action);
   lvslam::apps::addConvertCommand(app, action);
+  lvslam::apps::addSimulateCommand(app, action);
   lvslam::apps::addRunCommand(app, action);
 
   try {

@@ -1,0 +1,60 @@
+#include "lvslam/sim/sim_options.h"
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "lvslam/core/error.h"
+#include "lvslam/core/timestamp.h"
+
+namespace lvslam::sim {
+
+namespace {
+
+// Two comma-separated finite numbers.
+std::vector<double> parsePair(const std::string& text, const std::string& option, const std::string& shape) {
+  const auto comma = text.find(',');
+  double a = 0.0, b = 0.0;
+  if (comma == std::string::npos || !parseTimestamp(text.substr(0, comma), a) ||
+      !parseTimestamp(text.substr(comma + 1), b))
+    throw Error(option, "expected " + shape + " (two numbers separated by a comma), got '" + text + "'");
+  return {a, b};
+}
+
+}  // namespace
+
+void validate(const SimOptions& options) {
+  if (options.scenario != "room" && options.scenario != "hall" && options.scenario != "gate")
+    throw Error("--scenario", "unknown scenario '" + options.scenario + "' (expected room, hall or gate)");
+  if (!std::isfinite(options.duration) || options.duration <= 0.0)
+    throw Error("--duration", "must be a positive number of seconds");
+  if (options.duration > 3600.0) throw Error("--duration", "at most 3600 seconds");
+  if (const auto& e = options.extrinsic_error) {
+    if (!std::isfinite(e->rotation_deg) || !std::isfinite(e->translation_m) || e->rotation_deg < 0.0 ||
+        e->rotation_deg > 180.0 || e->translation_m < 0.0)
+      throw Error("--extrinsic-error", "DEG must be in [0, 180] and M non-negative");
+  }
+  if (const auto& b = options.camera_blackout) {
+    if (!std::isfinite(b->begin) || !std::isfinite(b->end) || b->begin < 0.0 || b->end < b->begin)
+      throw Error("--camera-blackout", "expected 0 <= T0 <= T1 (seconds from the sequence start)");
+  }
+  if (!std::isfinite(options.start_time) || options.start_time < 0.0)
+    throw Error("start_time", "must be a non-negative number of seconds");
+}
+
+ExtrinsicError parseExtrinsicError(const std::string& text) {
+  const auto v = parsePair(text, "--extrinsic-error", "DEG,M");
+  ExtrinsicError e{v[0], v[1]};
+  SimOptions probe;
+  probe.extrinsic_error = e;
+  validate(probe);
+  return e;
+}
+
+TimeInterval parseTimeInterval(const std::string& text, const std::string& option) {
+  const auto v = parsePair(text, option, "T0,T1");
+  if (v[0] < 0.0 || v[1] < v[0]) throw Error(option, "expected 0 <= T0 <= T1, got '" + text + "'");
+  return {v[0], v[1]};
+}
+
+}  // namespace lvslam::sim

@@ -1,0 +1,123 @@
+#include "lvslam/sim/simulate_sequence.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "lvslam/core/error.h"
+#include "lvslam/core/se3.h"
+#include "lvslam/io/sequence_writer.h"
+#include "lvslam/sim/camera_renderer.h"
+#include "lvslam/sim/counter_random.h"
+#include "lvslam/sim/lidar_simulator.h"
+
+namespace lvslam::sim {
+
+namespace {
+
+Eigen::Vector3d randomUnitVector(CounterRandom& rng) {
+  Eigen::Vector3d v;
+  do {
+    v = Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal());
+  } while (v.norm() < 1e-6);
+  return v.normalized();
+}
+
+std::string matrixList(const Eigen::Isometry3d& T) {
+  const Eigen::Matrix4d M = T.matrix();
+  std::string text;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) text += fmt::format("{}{:.17g}", r + c == 0 ? "" : ", ", M(r, c));
+  return "[" + text + "]";
+}
+
+void writeExtrinsicsTruth(const std::string& path, const Eigen::Isometry3d& truth, const SimOptions& options) {
+  std::ofstream out(path);
+  out << "# True camera-LiDAR extrinsics of this simulated sequence; sequence.yaml holds\n"
+         "# a perturbed copy when the simulation was asked for an extrinsic error.\n";
+  out << "T_camera_lidar: " << matrixList(truth) << "\n";
+  const ExtrinsicError e = options.extrinsic_error.value_or(ExtrinsicError{});
+  out << fmt::format("perturbation:\n  rotation_deg: {:.17g}\n  translation_m: {:.17g}\n", e.rotation_deg,
+                     e.translation_m);
+  if (!out) throw Error(path, "cannot write file");
+}
+
+SequenceInfo makeInfo(const Scenario& scenario, const Eigen::Isometry3d& T_camera_lidar) {
+  SequenceInfo info;
+  info.name = fmt::format("sim_{}{}_seed{}", scenario.name, scenario.options.night ? "_night" : "",
+                          scenario.options.seed);
+  info.camera = CameraInfo{scenario.camera.camera, scenario.camera.rate_hz};
+  LidarInfo lidar;
+  lidar.rings = static_cast<int>(scenario.lidar.elevations_deg.size());
+  lidar.rate_hz = scenario.lidar.rate_hz;
+  lidar.time_reference = TimeReference::kStart;
+  info.lidar = lidar;
+  info.T_camera_lidar = T_camera_lidar;
+  info.groundtruth_frame = GroundTruthFrame::kCamera;
+  return info;
+}
+
+bool inBlackout(const SimOptions& options, double t) {
+  return options.camera_blackout && t >= options.camera_blackout->begin && t <= options.camera_blackout->end;
+}
+
+}  // namespace
+
+Eigen::Isometry3d perturbExtrinsics(const Eigen::Isometry3d& T_camera_lidar, const ExtrinsicError& error,
+                                    std::uint64_t seed) {
+  CounterRandom rng(seed, RandomStream::kExtrinsics, 0);
+  const Eigen::Vector3d axis = randomUnitVector(rng);
+  const Eigen::Vector3d direction = randomUnitVector(rng);
+  const Eigen::Matrix3d R_error = expSO3(error.rotation_deg * M_PI / 180.0 * axis);
+  return makePose(R_error * T_camera_lidar.linear(),
+                  T_camera_lidar.translation() + error.translation_m * direction);
+}
+
+SimulationSummary simulateSequence(const SimOptions& options, const std::string& out_dir) {
+  const Scenario scenario = makeScenario(options);
+  const Eigen::Isometry3d truth = scenario.rig.T_camera_lidar();
+  const Eigen::Isometry3d written =
+      options.extrinsic_error ? perturbExtrinsics(truth, *options.extrinsic_error, options.seed) : truth;
+  SequenceWriter writer(out_dir, makeInfo(scenario, written));
+  writeExtrinsicsTruth((std::filesystem::path(out_dir) / kExtrinsicsTruthFile).string(), truth, options);
+
+  const CameraRenderer renderer(scenario);
+  const LidarSimulator lidar(scenario);
+  SimulationSummary summary;
+  const double camera_period = 1.0 / scenario.camera.rate_hz;
+  const double sweep = lidar.sweepDuration();
+  // Both streams in time order; a sweep is written once it has ended.
+  for (int k = 0, j = 0;;) {
+    const double t_image = scenario.camera.start_offset + k * camera_period;
+    const double t_scan = scenario.lidar.start_offset + j * sweep;
+    const bool image_left = t_image <= options.duration;
+    const bool scan_left = t_scan + sweep <= options.duration;
+    if (!image_left && !scan_left) break;
+    if (image_left && (!scan_left || t_image <= t_scan + sweep)) {
+      cv::Mat image = renderer.renderImage(t_image);
+      if (inBlackout(options, t_image)) image.setTo(0);
+      writer.writeImage(options.start_time + t_image, image);
+      ++k;
+    } else {
+      LidarScan scan = lidar.scanLidar(t_scan);
+      scan.timestamp += options.start_time;
+      writer.writeScan(scan);
+      ++j;
+    }
+    summary.images = k;
+    summary.scans = j;
+  }
+  Trajectory groundtruth;
+  const int poses = static_cast<int>(std::floor(options.duration * kGroundTruthRateHz)) + 1;
+  for (int i = 0; i < poses; ++i) {
+    const double t = i / kGroundTruthRateHz;
+    groundtruth.push_back({options.start_time + t, scenario.T_world_camera(t)});
+  }
+  writer.writeGroundTruth(groundtruth);
+  summary.groundtruth_poses = poses;
+  return summary;
+}
+
+}  // namespace lvslam::sim
