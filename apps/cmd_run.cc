@@ -18,6 +18,7 @@
 #include "lvslam/io/recording.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/lidar/lidar_odometry.h"
+#include "lvslam/sim/simulate_sequence.h"
 
 namespace lvslam::apps {
 
@@ -80,7 +81,26 @@ void printAccuracy(const Recording& recording, const Trajectory& T_world_lidar) 
   std::cout << eval::formatSummary(eval::evaluate(*recording.ground_truth, estimate, options));
 }
 
-int runRun(const RunArgs& args) {
+// The built-in default input: a simulated room sequence, generated once into
+// a folder beside the outputs (renamed into place only when complete, so an
+// interrupted run never leaves a half sequence that looks whole).
+std::string defaultSequence() {
+  const std::filesystem::path dir = "out/default-room";
+  if (std::filesystem::exists(dir / "sequence.yaml")) return dir.string();
+  sim::SimOptions options;
+  options.scenario = "room";
+  options.duration = 30.0;
+  std::cout << "no --sequence or --bag given: simulating the built-in default, a " << options.duration
+            << " s room sequence, into " << dir.string() << " (once)\n";
+  const std::filesystem::path partial = dir.string() + ".partial";
+  std::filesystem::remove_all(partial);
+  sim::simulateSequence(options, partial.string());
+  std::filesystem::rename(partial, dir);
+  return dir.string();
+}
+
+int runRun(RunArgs args) {
+  if (args.input.sequence_dir.empty() && args.input.bag_files.empty()) args.input.sequence_dir = defaultSequence();
   Recording recording = openRecording(args.input);
   if (args.mode != "lidar")
     throw Error("lvslam run", "mode '" + args.mode + "' is not yet available (available: lidar)");
@@ -104,8 +124,9 @@ int runRun(const RunArgs& args) {
 
 void addRunCommand(CLI::App& app, CommandAction& action) {
   CLI::App* cmd = app.add_subcommand(
-      "run", "Run SLAM over a sequence folder; writes OUT/trajectory.tum and prints the accuracy when the "
-             "sequence has ground truth.");
+      "run", "Run SLAM over a sequence folder or ROS1 bags; writes OUT/trajectory.tum and prints the accuracy "
+             "when there is ground truth. Without --sequence or --bag it runs on the built-in default, a simulated "
+             "room sequence generated once into out/default-room.");
   auto args = std::make_shared<RunArgs>();
   auto* sequence = cmd->add_option("--sequence", args->input.sequence_dir, "Sequence folder (docs/sequence-format.md)");
   auto* bags = cmd->add_option("--bag", args->input.bag_files, "ROS1 bag files of one recording (needs --preset)");
@@ -117,7 +138,7 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
   cmd->add_option("--mode", args->mode, "lidar (LiDAR odometry only); visual and fused: not yet available")
       ->default_val("lidar")
       ->check(CLI::IsMember({"lidar", "visual", "fused"}));
-  cmd->add_option("--out", args->out_dir, "Output folder")->required();
+  cmd->add_option("--out", args->out_dir, "Output folder")->default_val("out/run");
   cmd->add_option("--config", args->config_path, "YAML configuration (e.g. config/sim.yaml); defaults otherwise");
   cmd->callback([&action, args] { action = [args] { return runRun(*args); }; });
 }
