@@ -15,5 +15,6 @@ void addEvalCommand(CLI::App& app, CommandAction& action);
 void addConvertCommand(CLI::App& app, CommandAction& action);
 void addSimulateCommand(CLI::App& app, CommandAction& action);
 void addRunCommand(CLI::App& app, CommandAction& action);
+void addOverlayCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace lvslam::apps

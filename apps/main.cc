@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   lvslam::apps::addConvertCommand(app, action);
   lvslam::apps::addSimulateCommand(app, action);
   lvslam::apps::addRunCommand(app, action);
+  lvslam::apps::addOverlayCommand(app, action);
 
   try {
     app.parse(argc, argv);

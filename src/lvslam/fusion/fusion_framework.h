@@ -37,6 +37,9 @@ class FusionFramework {
 
   // Classified feature points of one LiDAR scan with the scan's motion.
   void addLidarScan(const std::vector<TimedFeature>& features, const ConstantVelocityMotion& motion);
+  // Forgets the accumulated scans (a driver that reloads them each scan).
+  void clearLidarScans() { accumulator_.clear(); }
+  std::size_t accumulatedScans() const { return accumulator_.scans(); }
 
   // One camera frame: `T_world_lidar` is the LiDAR pose at the camera time
   // (interpolated or extrapolated at constant velocity by the caller).
