@@ -107,6 +107,17 @@ void VisualMap::removeLine(int line) {
   l.bad = true;
 }
 
+void VisualMap::removeKeyframe(int keyframe) {
+  const Keyframe& kf = find(keyframes_, keyframe, "keyframe");
+  const std::vector<int> points = kf.point_landmark, lines = kf.line_landmark;
+  for (const int p : points)
+    if (p >= 0) removePointObservation(p, keyframe);
+  for (const int l : lines)
+    if (l >= 0) removeLineObservation(l, keyframe);
+  covisibility_.removeNode(keyframe);
+  keyframes_.erase(keyframe);
+}
+
 void VisualMap::setFusionDirection(int line, const Eigen::Vector3d& d_fu) {
   if (!d_fu.allFinite() || !(d_fu.norm() > 0.0)) throw Error("VisualMap", "fusion direction must be finite and non-zero");
   find(lines_, line, "line").fusion_direction = d_fu.normalized();

@@ -29,6 +29,9 @@ class VisualMap {
   // Marks the landmark bad and drops all its observations.
   void removePoint(int point);
   void removeLine(int line);
+  // Drops the keyframe's observations, its covisibility edges and the keyframe
+  // (keyframe culling). Landmarks keep their other observations.
+  void removeKeyframe(int keyframe);
 
   void setFusionDirection(int line, const Eigen::Vector3d& d_fu);
 

@@ -1,0 +1,379 @@
+#include "lvslam/visual/tracking/visual_slam.h"
+
+#include <algorithm>
+
+#include "lvslam/core/error.h"
+#include "lvslam/core/se3.h"
+#include "lvslam/visual/feature/feature_extractor.h"
+#include "lvslam/visual/module/local_mapper.h"
+#include "lvslam/visual/tracking/frame_tracker.h"
+
+namespace lvslam::visual {
+
+const char* trackingStateName(TrackingState state) {
+  switch (state) {
+    case TrackingState::kInitializing: return "initializing";
+    case TrackingState::kTracking: return "tracking";
+    case TrackingState::kLost: return "lost";
+  }
+  return "unknown";
+}
+
+namespace {
+
+FrameTrackerConfig trackerConfig(const VisualSlamConfig& c) {
+  FrameTrackerConfig t;
+  t.search_radius_px = c.search_radius_px;
+  t.refine_radius_px = c.refine_radius_px;
+  t.min_inliers = c.min_tracked;
+  t.point_matching = c.visual.point_matching;
+  t.line_matching = c.visual.line_matching;
+  t.pose = c.visual.pose;
+  return t;
+}
+
+LocalMapperConfig mapperConfig(const VisualSlamConfig& c) {
+  LocalMapperConfig m;
+  m.points = c.triangulation;
+  m.line_matching = c.visual.line_matching;
+  m.window = c.visual.local_window;
+  m.culling = c.culling;
+  m.depth_check = c.depth_check;
+  return m;
+}
+
+PinholeIntrinsics intrinsicsOf(const PinholeCamera& camera) {
+  return {camera.fx(), camera.fy(), camera.cx(), camera.cy()};
+}
+
+}  // namespace
+
+struct VisualSlam::Impl {
+  Impl(const VisualSlamConfig& c, const PinholeCamera& cam)
+      : config(c),
+        camera(cam),
+        K(intrinsicsOf(cam)),
+        extractor(c.visual.features, cam),
+        initializer(c.visual.initializer, K),
+        tracker(trackerConfig(c)),
+        mapper(mapperConfig(c), K) {}
+
+  struct FusionLineWait {
+    int line = -1, until_frame = 0;
+  };
+
+  VisualSlamConfig config;
+  PinholeCamera camera;
+  PinholeIntrinsics K;
+  FeatureExtractor extractor;
+  TwoViewInitializer initializer;
+  FrameTrackerConfig tracker;
+  LocalMapper mapper;
+
+  VisualMap map;
+  int map_id = 0;
+  TrackingState state = TrackingState::kInitializing;
+  int frame_index = -1;
+  TrackedFrame current;
+  bool current_has_pose = false;
+  int current_keyframe = -1;  // the current frame's keyframe id, -1 if none
+  std::vector<PixelDepth> next_hints;
+  bool next_hints_given = false;
+  bool hints_given = false;  // setDepthHints() was called for the current frame
+  // Initialisation reference.
+  std::optional<TrackedFrame> reference;
+  double reference_time = 0.0;
+  int reference_frame = 0;
+  std::vector<DepthHint> reference_hints;
+  int skipped_references = 0;
+  bool metric = false;
+  // Tracking.
+  Eigen::Isometry3d T_last = Eigen::Isometry3d::Identity();  // T_camera_world of the last tracked frame
+  Eigen::Isometry3d velocity = Eigen::Isometry3d::Identity();  // T_last * T_before^-1
+  int reference_keyframe = -1;
+  int last_keyframe_frame = 0;
+  int lost_frames = 0;
+  std::vector<FusionLineWait> fusion_lines;
+
+  VisualFrameResult track(const ImageFrame& frame, std::vector<PixelDepth> hints);
+  void initialize(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
+  void setReference(const std::vector<PixelDepth>& hints);
+  bool trackFrame(VisualFrameResult& result);
+  void recoverOrRestart(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
+  void loseTracking();
+  void newMap();
+  bool needKeyframe() const;
+  void insertKeyframe();
+  std::vector<int> pendingFusionLines();
+};
+
+VisualFrameResult VisualSlam::Impl::track(const ImageFrame& frame, std::vector<PixelDepth> hints) {
+  ++frame_index;
+  current_has_pose = false;
+  current_keyframe = -1;
+  VisualFrameResult result;
+  result.timestamp = frame.timestamp;
+  const ImageStatistics stats = imageStatistics(frame.image);
+  result.brightness = stats.brightness;
+  result.contrast = stats.contrast;
+  current = TrackedFrame{};
+  current.features = extractor.extract(frame);  // throws on a wrong image
+  current.features.timestamp = frame.timestamp;
+  result.keypoints = static_cast<int>(current.features.points.size());
+  result.segments = static_cast<int>(current.features.lines.size());
+  const bool usable = isUsable(stats, config.usability) && result.keypoints >= config.min_keypoints;
+  if (!usable) {
+    if (state != TrackingState::kInitializing) loseTracking();
+    reference.reset();  // an unusable frame breaks the initialisation pair
+  } else {
+    current.grid = FeatureGrid(current.features.points, current.features.width, current.features.height);
+    if (state == TrackingState::kInitializing) {
+      initialize(hints, result);
+    } else if (state == TrackingState::kTracking) {
+      if (!trackFrame(result)) loseTracking();
+    } else {
+      recoverOrRestart(hints, result);
+    }
+  }
+  result.state = state;
+  result.map_id = map_id;
+  result.metric = metric;
+  result.pose_valid = current_has_pose;
+  if (current_has_pose) result.T_world_camera = current.T_camera_world.inverse();
+  result.tracked_points = current.point_inliers;
+  result.tracked_lines = current.line_inliers;
+  result.keyframe = current_keyframe >= 0;
+  return result;
+}
+
+void VisualSlam::Impl::setReference(const std::vector<PixelDepth>& hints) {
+  reference_hints = depthHintsForKeypoints(current.features, hints, config.hint_radius_px);
+  // Hints are given but too few reach keypoints (e.g. the LiDAR sweep was
+  // elsewhere at this image's time): a later frame is a better metric anchor.
+  const bool unhinted = static_cast<int>(reference_hints.size()) < config.visual.initializer.min_depth_hints;
+  if (hints_given && unhinted && skipped_references < config.max_unhinted_references) {
+    ++skipped_references;
+    reference.reset();
+    return;
+  }
+  skipped_references = 0;
+  reference = current;
+  reference_time = current.features.timestamp;
+  reference_frame = frame_index;
+}
+
+void VisualSlam::Impl::initialize(const std::vector<PixelDepth>& hints, VisualFrameResult& result) {
+  if (!reference || frame_index - reference_frame > config.max_init_frames) return setReference(hints);
+  const std::vector<PointMatch> matches = matchInWindow(reference->features, current.features, current.grid,
+                                                        config.init_window_px, config.visual.point_matching);
+  if (static_cast<int>(matches.size()) < config.min_init_matches) return setReference(hints);
+  std::vector<TwoViewMatch> pairs;
+  for (const PointMatch& m : matches) pairs.push_back({m.index1, m.index2});
+  initializer.setDepthHints(reference_hints);
+  const auto init = initializer.initialize(reference->features.points, current.features.points, pairs);
+  if (!init) return;
+  const auto built = buildInitialMap(map, {reference_time, &reference->features},
+                                     {current.features.timestamp, &current.features}, *init, pairs, K, config.visual,
+                                     config.visual.initializer.min_triangulated);
+  if (!built) return setReference(hints);
+  metric = init->metric;
+  mapper.addRecentPoints(built->points, built->keyframe2);
+  mapper.addRecentLines(built->lines, built->keyframe2);
+  const Keyframe& k2 = map.keyframe(built->keyframe2);
+  current.T_camera_world = k2.T_camera_world;
+  current.point_landmark = k2.point_landmark;
+  current.line_landmark = k2.line_landmark;
+  current.point_inliers = static_cast<int>(std::count_if(k2.point_landmark.begin(), k2.point_landmark.end(), [](int id) { return id >= 0; }));
+  current.line_inliers = static_cast<int>(std::count_if(k2.line_landmark.begin(), k2.line_landmark.end(), [](int id) { return id >= 0; }));
+  current_has_pose = true;
+  current_keyframe = built->keyframe2;
+  result.initial_reference = StampedPose{reference_time, map.keyframe(built->keyframe1).T_camera_world.inverse()};
+  result.inlier_ratio = static_cast<double>(init->num_triangulated) / std::max<size_t>(1, pairs.size());
+  // Constant velocity per frame: the initial motion spread over its frames.
+  const int frames = std::max(1, frame_index - reference_frame);
+  velocity = expSE3(logSE3(k2.T_camera_world) / frames);
+  T_last = k2.T_camera_world;
+  reference_keyframe = built->keyframe2;
+  last_keyframe_frame = frame_index;
+  reference.reset();
+  state = TrackingState::kTracking;
+}
+
+std::vector<int> VisualSlam::Impl::pendingFusionLines() {
+  std::vector<int> ids;
+  std::vector<FusionLineWait> keep;
+  for (const FusionLineWait& w : fusion_lines) {
+    if (!map.lines().count(w.line) || map.line(w.line).bad) continue;
+    if (frame_index > w.until_frame) {
+      if (map.line(w.line).observations.empty()) map.removeLine(w.line);  // never reached a keyframe
+      continue;
+    }
+    ids.push_back(w.line);
+    keep.push_back(w);
+  }
+  fusion_lines = keep;
+  return ids;
+}
+
+bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
+  if (!map.hasKeyframe(reference_keyframe)) return false;
+  const LocalMap local = collectLocalMap(map, reference_keyframe, config.local_keyframes, pendingFusionLines());
+  FrameTrackingResult tracked = trackLocalMap(map, local, velocity * T_last, K, 1.0, tracker, current);
+  if (!tracked.success)  // fall back: no motion, wider window
+    tracked = trackLocalMap(map, local, T_last, K, config.recovery_radius_scale, tracker, current);
+  if (!tracked.success) return false;
+  result.inlier_ratio =
+      static_cast<double>(current.point_inliers + current.line_inliers) / std::max(1, tracked.matches);
+  std::vector<int> found_points, found_lines;
+  for (const int id : current.point_landmark)
+    if (id >= 0) found_points.push_back(id);
+  for (const int id : current.line_landmark)
+    if (id >= 0) found_lines.push_back(id);
+  mapper.countTracking(tracked.visible_points, found_points, tracked.visible_lines, found_lines);
+  velocity = current.T_camera_world * T_last.inverse();
+  T_last = current.T_camera_world;
+  current_has_pose = true;
+  lost_frames = 0;
+  if (needKeyframe()) insertKeyframe();
+  return true;
+}
+
+bool VisualSlam::Impl::needKeyframe() const {
+  const Keyframe& ref = map.keyframe(reference_keyframe);
+  const size_t min_observers = 2;
+  int ref_tracked = 0;
+  for (const int id : ref.point_landmark)
+    ref_tracked += id >= 0 && !map.point(id).bad && map.point(id).observations.size() >= min_observers;
+  const int since = frame_index - last_keyframe_frame;
+  const bool few = current.point_inliers < config.keyframe_tracked_ratio * ref_tracked ||
+                   current.point_inliers < config.keyframe_min_tracked;
+  return current.point_inliers > 15 &&
+         (since >= config.max_keyframe_interval || (few && since >= config.min_keyframe_interval));
+}
+
+void VisualSlam::Impl::insertKeyframe() {
+  Keyframe k;
+  k.timestamp = current.features.timestamp;
+  k.T_camera_world = current.T_camera_world;
+  k.features = current.features;
+  const int id = map.addKeyframe(std::move(k));
+  for (size_t i = 0; i < current.point_landmark.size(); ++i)
+    if (current.point_landmark[i] >= 0) map.addPointObservation(current.point_landmark[i], id, static_cast<int>(i));
+  for (size_t i = 0; i < current.line_landmark.size(); ++i)
+    if (current.line_landmark[i] >= 0) map.addLineObservation(current.line_landmark[i], id, static_cast<int>(i));
+  mapper.process(map, id);
+  // BA moved the keyframe: the tracked pose follows it.
+  current.T_camera_world = map.keyframe(id).T_camera_world;
+  T_last = current.T_camera_world;
+  reference_keyframe = id;
+  current_keyframe = id;
+  last_keyframe_frame = frame_index;
+}
+
+void VisualSlam::Impl::loseTracking() {
+  if (state == TrackingState::kTracking) lost_frames = 0;
+  state = TrackingState::kLost;
+  ++lost_frames;
+}
+
+void VisualSlam::Impl::newMap() {
+  map = VisualMap();
+  mapper.reset();
+  fusion_lines.clear();
+  ++map_id;
+  metric = false;
+  reference.reset();
+  reference_keyframe = -1;
+  state = TrackingState::kInitializing;
+}
+
+void VisualSlam::Impl::recoverOrRestart(const std::vector<PixelDepth>& hints, VisualFrameResult& result) {
+  if (lost_frames <= config.relocalize_frames && map.hasKeyframe(reference_keyframe)) {
+    // Relocalisation without bag of words: the old local map from the last pose, wide window.
+    const LocalMap local = collectLocalMap(map, reference_keyframe, config.local_keyframes, {});
+    const FrameTrackingResult tracked =
+        trackLocalMap(map, local, T_last, K, config.recovery_radius_scale, tracker, current);
+    if (tracked.success) {
+      state = TrackingState::kTracking;
+      velocity = Eigen::Isometry3d::Identity();
+      T_last = current.T_camera_world;
+      current_has_pose = true;
+      lost_frames = 0;
+      result.inlier_ratio =
+          static_cast<double>(current.point_inliers + current.line_inliers) / std::max(1, tracked.matches);
+      return;
+    }
+    ++lost_frames;
+    return;
+  }
+  newMap();
+  initialize(hints, result);
+}
+
+VisualSlam::VisualSlam(const VisualSlamConfig& config, const PinholeCamera& camera)
+    : impl_(std::make_unique<Impl>(config, camera)) {}
+VisualSlam::~VisualSlam() = default;
+
+VisualFrameResult VisualSlam::track(const ImageFrame& frame) {
+  std::vector<PixelDepth> hints;
+  hints.swap(impl_->next_hints);
+  impl_->hints_given = impl_->next_hints_given;
+  impl_->next_hints_given = false;
+  return impl_->track(frame, std::move(hints));
+}
+
+void VisualSlam::setDepthHints(std::vector<PixelDepth> hints) {
+  impl_->next_hints = std::move(hints);
+  impl_->next_hints_given = true;
+}
+bool VisualSlam::needsDepthHints() const { return impl_->state != TrackingState::kTracking; }
+TrackingState VisualSlam::state() const { return impl_->state; }
+int VisualSlam::mapId() const { return impl_->map_id; }
+const VisualMap& VisualSlam::map() const { return impl_->map; }
+
+std::vector<ImageLineSegment> VisualSlam::lineSegments() const {
+  std::vector<ImageLineSegment> out;
+  const PinholeCamera& cam = impl_->camera;
+  const auto raw = [&](const Eigen::Vector2d& px) {
+    const Eigen::Vector3d ray((px.x() - cam.cx()) / cam.fx(), (px.y() - cam.cy()) / cam.fy(), 1.0);
+    return cam.project(ray).value_or(px);
+  };
+  for (const LineSegment& s : impl_->current.features.lines) out.push_back({raw(s.start), raw(s.end)});
+  return out;
+}
+
+int VisualSlam::addFusionLine(int segment, const Eigen::Vector3d& A_camera, const Eigen::Vector3d& B_camera,
+                              const Eigen::Vector3d& direction_camera) {
+  Impl& s = *impl_;
+  if (!A_camera.allFinite() || !B_camera.allFinite() || !direction_camera.allFinite() ||
+      !(direction_camera.norm() > 0.0) || !((B_camera - A_camera).norm() > 1e-9)) {
+    throw Error("VisualSlam::addFusionLine", "endpoints and direction must be finite, distinct and non-zero");
+  }
+  if (segment < 0 || static_cast<size_t>(segment) >= s.current.features.lines.size())
+    throw Error("VisualSlam::addFusionLine", "segment index " + std::to_string(segment) + " out of range");
+  if (!s.current_has_pose) return -1;
+  const Eigen::Isometry3d T_world_camera = s.current.T_camera_world.inverse();
+  const Eigen::Vector3d d_fu = T_world_camera.linear() * direction_camera;
+  const int existing = s.current.line_landmark[segment];
+  if (existing >= 0 && !s.map.line(existing).bad) {
+    s.map.setFusionDirection(existing, d_fu);
+    return existing;
+  }
+  // Paper eq.: m = A x B, d = B - A, moved to the world by the current pose.
+  const PluckerLine line_world = PluckerLine::fromPoints(A_camera, B_camera).transformed(T_world_camera);
+  const int id = s.map.addLineLandmark(line_world, T_world_camera * A_camera, T_world_camera * B_camera,
+                                       s.current.features.line_descriptors.empty()
+                                           ? cv::Mat()
+                                           : s.current.features.line_descriptors.row(segment));
+  s.map.line(id).from_fusion = true;
+  s.map.setFusionDirection(id, d_fu);
+  s.current.line_landmark[segment] = id;
+  if (s.current_keyframe >= 0) {
+    s.map.addLineObservation(id, s.current_keyframe, segment);
+    s.mapper.addRecentLines({id}, s.current_keyframe);
+  }
+  s.fusion_lines.push_back({id, s.frame_index + s.config.fusion_line_lifetime});
+  return id;
+}
+
+}  // namespace lvslam::visual

@@ -1,0 +1,126 @@
+#pragma once
+// Monocular point-line visual SLAM (Structure PLP-SLAM / ORB-SLAM2 style, Cao
+// et al. Sec. III-D): per image, features are extracted and the frame is
+// tracked against the local map with a constant-velocity prediction; new
+// keyframes run the local mapper in the same thread (deterministic). When
+// tracking is lost it first retries against the old map from the last pose
+// with a wide window, then starts a new map (new mapId()) and re-initialises,
+// metric when depth hints are given.
+//
+// Fusion face: setDepthHints() before track() for a metric start,
+// lineSegments() of the current frame and addFusionLine() after track().
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "lvslam/core/camera.h"
+#include "lvslam/core/image_frame.h"
+#include "lvslam/core/trajectory.h"
+#include "lvslam/visual/data/visual_map.h"
+#include "lvslam/visual/module/line_depth_check.h"
+#include "lvslam/visual/module/map_culling.h"
+#include "lvslam/visual/module/point_triangulation.h"
+#include "lvslam/visual/tracking/image_statistics.h"
+#include "lvslam/visual/tracking/map_initialization.h"
+#include "lvslam/visual/visual_config.h"
+
+namespace lvslam::visual {
+
+enum class TrackingState { kInitializing, kTracking, kLost };
+const char* trackingStateName(TrackingState state);
+
+struct VisualSlamConfig {
+  VisualConfig visual;
+  ImageUsabilityConfig usability;
+  int min_keypoints = 100;  // fewer: the frame is not usable (featureless, blurred)
+  // Initialisation (ORB-SLAM): matches reference -> current in a window.
+  double init_window_px = 100.0;
+  int min_init_matches = 100;
+  int max_init_frames = 30;     // a reference older than this is replaced
+  double hint_radius_px = 3.0;  // a depth hint serves keypoints this close
+  // A frame given hints of which too few reach keypoints is passed over as
+  // the first view, at most this many times in a row.
+  int max_unhinted_references = 10;
+  // Tracking.
+  double search_radius_px = 15.0;
+  double refine_radius_px = 5.0;
+  double recovery_radius_scale = 3.0;  // wider window after a failure / when lost
+  int min_tracked = 30;                // point + line inliers
+  size_t local_keyframes = 10;
+  int relocalize_frames = 8;  // lost this long: a new map
+  // Keyframes (ORB-SLAM): tracked points below this share of the reference
+  // keyframe's, or this many frames since the last keyframe.
+  double keyframe_tracked_ratio = 0.9;
+  int keyframe_min_tracked = 100;  // fewer tracked points: a keyframe (new points are needed)
+  int min_keyframe_interval = 3;
+  int max_keyframe_interval = 10;
+  int fusion_line_lifetime = 15;  // frames a fusion line waits for a keyframe observation
+  PointTriangulationConfig triangulation;
+  CullingConfig culling;
+  LineDepthCheckConfig depth_check;
+};
+
+// A line segment of the current frame in raw (distorted) image pixels.
+struct ImageLineSegment {
+  Eigen::Vector2d start = Eigen::Vector2d::Zero(), end = Eigen::Vector2d::Zero();
+};
+
+struct VisualFrameResult {
+  double timestamp = 0.0;
+  TrackingState state = TrackingState::kInitializing;
+  bool pose_valid = false;  // tracked (or initialised) in this frame
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();  // world = the map's frame
+  int map_id = 0;
+  bool keyframe = false;
+  bool metric = false;  // the map's scale came from depth hints
+  // The map was initialised in this frame: its first view, at an earlier time.
+  std::optional<StampedPose> initial_reference;
+  // Figures for the detection module.
+  int tracked_points = 0, tracked_lines = 0;
+  double inlier_ratio = 0.0;  // inliers / matches of the last pose optimisation
+  double brightness = 0.0, contrast = 0.0;
+  int keypoints = 0, segments = 0;
+};
+
+class VisualSlam {
+ public:
+  VisualSlam(const VisualSlamConfig& config, const PinholeCamera& camera);
+  ~VisualSlam();
+  VisualSlam(const VisualSlam&) = delete;
+  VisualSlam& operator=(const VisualSlam&) = delete;
+
+  // Throws lvslam::Error on an image of the wrong size or type.
+  VisualFrameResult track(const ImageFrame& frame);
+
+  // Hints for the next frame given to track(); used when that frame becomes
+  // the first view of a map. Non-finite or non-positive depths are ignored.
+  // Called at all (even with no hints), it marks the frame as one that should
+  // have had hints: a frame whose hints reach too few keypoints is then not
+  // taken as a first view (config.max_unhinted_references).
+  void setDepthHints(std::vector<PixelDepth> hints);
+  bool needsDepthHints() const;
+
+  // The current frame's segments (index = segment index of addFusionLine).
+  std::vector<ImageLineSegment> lineSegments() const;
+  // A fusion line for segment `segment` of the current frame: endpoints A, B
+  // and the direction d_fu in the current camera frame. It becomes a line
+  // landmark with Plücker m = A x B, d = B - A moved to the world, flagged
+  // from_fusion, with fusion_direction d_fu (or, when the segment already
+  // tracks a landmark, that landmark gets d_fu). Returns the landmark id, or
+  // -1 when the current frame has no pose. Throws lvslam::Error on non-finite
+  // input, A == B or a segment index out of range.
+  int addFusionLine(int segment, const Eigen::Vector3d& A_camera, const Eigen::Vector3d& B_camera,
+                    const Eigen::Vector3d& direction_camera);
+
+  TrackingState state() const;
+  int mapId() const;
+  const VisualMap& map() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lvslam::visual

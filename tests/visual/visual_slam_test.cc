@@ -1,0 +1,175 @@
+// VisualSlam on short simulated room sequences rendered in memory: metric
+// initialisation from the renderer's exact depth and tracking under an ATE
+// bound, loss on black frames and re-initialisation in a new map, and the
+// fusion-line face.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "lvslam/core/error.h"
+#include "lvslam/eval/evaluate.h"
+#include "lvslam/sim/camera_renderer.h"
+#include "lvslam/sim/scenario.h"
+#include "lvslam/visual/tracking/visual_slam.h"
+
+namespace lvslam::visual {
+namespace {
+
+struct RenderedFrame {
+  ImageFrame image;
+  cv::Mat depth;  // CV_32F, exact
+  Eigen::Isometry3d T_world_camera;
+};
+
+constexpr double kDuration = 4.0;
+
+class VisualSlamTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    sim::SimOptions options;
+    options.scenario = "room";
+    options.duration = kDuration;
+    scenario_ = new sim::Scenario(sim::makeScenario(options));
+    const sim::CameraRenderer renderer(*scenario_);
+    frames_ = new std::vector<RenderedFrame>();
+    for (double t = 0.0; t < kDuration; t += 1.0 / scenario_->camera.rate_hz)
+      frames_->push_back({{t, renderer.renderImage(t)}, renderer.renderDepth(t), scenario_->T_world_camera(t)});
+  }
+  static void TearDownTestSuite() {
+    delete frames_;
+    delete scenario_;
+  }
+
+  // Exact depth on a 4-pixel grid, the stand-in for projected LiDAR points.
+  static std::vector<PixelDepth> depthHints(const cv::Mat& depth) {
+    std::vector<PixelDepth> hints;
+    for (int v = 0; v < depth.rows; v += 4)
+      for (int u = 0; u < depth.cols; u += 4)
+        if (depth.at<float>(v, u) > 0.0f) hints.push_back({{u, v}, depth.at<float>(v, u)});
+    return hints;
+  }
+
+  // Feeds frames [begin, end) and collects the tracked poses.
+  static void run(VisualSlam& slam, size_t begin, size_t end, Trajectory& estimate, Trajectory& truth,
+                  std::vector<VisualFrameResult>* results = nullptr) {
+    for (size_t i = begin; i < end; ++i) {
+      const RenderedFrame& f = (*frames_)[i];
+      if (slam.needsDepthHints()) slam.setDepthHints(depthHints(f.depth));
+      const VisualFrameResult r = slam.track(f.image);
+      if (results) results->push_back(r);
+      if (!r.pose_valid) continue;
+      estimate.push_back({r.timestamp, r.T_world_camera});
+      truth.push_back({r.timestamp, f.T_world_camera});
+    }
+  }
+
+  static const PinholeCamera& camera() { return scenario_->camera.camera; }
+
+  static sim::Scenario* scenario_;
+  static std::vector<RenderedFrame>* frames_;
+};
+
+sim::Scenario* VisualSlamTest::scenario_ = nullptr;
+std::vector<RenderedFrame>* VisualSlamTest::frames_ = nullptr;
+
+TEST_F(VisualSlamTest, InitialisesMetricallyAndTracksWithinCentimetres) {
+  VisualSlam slam(VisualSlamConfig{}, camera());
+  Trajectory estimate, truth;
+  std::vector<VisualFrameResult> results;
+  run(slam, 0, frames_->size(), estimate, truth, &results);
+  // Monocular initialisation waits for parallax; from then on every frame is tracked.
+  const auto first = std::find_if(results.begin(), results.end(), [](const auto& r) { return r.pose_valid; });
+  ASSERT_NE(first, results.end());
+  EXPECT_TRUE(std::all_of(first, results.end(), [](const auto& r) { return r.pose_valid; }));
+  ASSERT_GE(estimate.size(), frames_->size() / 2);
+  EXPECT_EQ(slam.state(), TrackingState::kTracking);
+  EXPECT_TRUE(results.back().metric);
+  EXPECT_GT(results.back().tracked_points, 50);
+  EXPECT_GT(slam.map().keyframes().size(), 2u);
+  EXPECT_GT(slam.map().lines().size(), 0u);
+  eval::EvalOptions options;
+  options.alignment = eval::Alignment::kSE3;  // metric: no scale correction
+  const eval::EvalResult accuracy = eval::evaluate(truth, estimate, options);
+  EXPECT_LT(accuracy.ate.stats.rmse, 0.05);
+  // The path is long enough that a wrong scale would show in the ATE.
+  const double path = (truth.back().T_world_frame.translation() - truth.front().T_world_frame.translation()).norm();
+  EXPECT_GT(path, 0.5);
+}
+
+TEST_F(VisualSlamTest, BlackFramesLoseTrackingThenANewMapStarts) {
+  VisualSlamConfig config;
+  config.relocalize_frames = 2;
+  VisualSlam slam(config, camera());
+  Trajectory estimate, truth;
+  const size_t half = frames_->size() / 2;
+  run(slam, 0, half, estimate, truth);
+  ASSERT_EQ(slam.state(), TrackingState::kTracking);
+  ASSERT_EQ(slam.mapId(), 0);
+  for (int k = 0; k < 5; ++k) {
+    const ImageFrame black{(*frames_)[half].image.timestamp - 0.01 * (5 - k),
+                           cv::Mat::zeros(camera().height(), camera().width(), CV_8UC1)};
+    const VisualFrameResult r = slam.track(black);
+    EXPECT_EQ(r.state, TrackingState::kLost);
+    EXPECT_FALSE(r.pose_valid);
+    EXPECT_LT(r.brightness, 1.0);
+  }
+  Trajectory after, after_truth;
+  run(slam, half, frames_->size(), after, after_truth);
+  EXPECT_EQ(slam.state(), TrackingState::kTracking);
+  EXPECT_EQ(slam.mapId(), 1);
+  ASSERT_GE(after.size(), 5u);
+  eval::EvalOptions options;
+  options.alignment = eval::Alignment::kSE3;
+  EXPECT_LT(eval::evaluate(after_truth, after, options).ate.stats.rmse, 0.05);
+}
+
+TEST_F(VisualSlamTest, FusionLineBecomesALandmarkWithItsPluckerCoordinates) {
+  VisualSlam slam(VisualSlamConfig{}, camera());
+  Trajectory estimate, truth;
+  run(slam, 0, frames_->size() / 2, estimate, truth);
+  ASSERT_EQ(slam.state(), TrackingState::kTracking);
+  const std::vector<ImageLineSegment> segments = slam.lineSegments();
+  ASSERT_FALSE(segments.empty());
+  const Eigen::Isometry3d T_world_camera = estimate.back().T_world_frame;
+  const Eigen::Vector3d A(0.3, -0.2, 2.0), B(0.9, 0.4, 3.5), direction = (B - A).normalized();
+  // Pick a segment without a landmark, so that a new landmark is created.
+  int landmark = -1;
+  const size_t lines_before = slam.map().lines().size();
+  for (size_t s = 0; s < segments.size() && landmark < 0; ++s) {
+    const int id = slam.addFusionLine(static_cast<int>(s), A, B, direction);
+    if (slam.map().lines().size() > lines_before) landmark = id;
+  }
+  ASSERT_GE(landmark, 0);
+  const LineLandmark& line = slam.map().line(landmark);
+  const Eigen::Vector3d A_w = T_world_camera * A, B_w = T_world_camera * B;
+  EXPECT_TRUE(line.from_fusion);
+  EXPECT_LT((line.line_world.m - A_w.cross(B_w)).norm(), 1e-9);
+  EXPECT_LT((line.line_world.d - (B_w - A_w)).norm(), 1e-9);
+  ASSERT_TRUE(line.fusion_direction.has_value());
+  EXPECT_LT((*line.fusion_direction - T_world_camera.linear() * direction).norm(), 1e-9);
+  EXPECT_LT((line.start_world - A_w).norm(), 1e-9);
+  // Bad input is an error, not a landmark.
+  const Eigen::Vector3d nan(std::nan(""), 0.0, 1.0);
+  EXPECT_THROW(slam.addFusionLine(0, nan, B, direction), Error);
+  EXPECT_THROW(slam.addFusionLine(0, A, A, direction), Error);
+  EXPECT_THROW(slam.addFusionLine(static_cast<int>(segments.size()), A, B, direction), Error);
+  // The tracker keeps working with the fusion landmark in its local map.
+  run(slam, frames_->size() / 2, frames_->size() / 2 + 5, estimate, truth);
+  EXPECT_EQ(slam.state(), TrackingState::kTracking);
+}
+
+TEST(ImageStatisticsTest, BrightnessAndContrastOfKnownImages) {
+  cv::Mat half(10, 10, CV_8UC1, cv::Scalar(0));
+  half.colRange(5, 10).setTo(200);
+  const ImageStatistics s = imageStatistics(half);
+  EXPECT_NEAR(s.brightness, 100.0, 1e-9);
+  EXPECT_NEAR(s.contrast, 100.0, 1e-9);
+  EXPECT_TRUE(isUsable(s, {}));
+  EXPECT_FALSE(isUsable(imageStatistics(cv::Mat(10, 10, CV_8UC1, cv::Scalar(255))), {}));
+  EXPECT_FALSE(isUsable(imageStatistics(cv::Mat(10, 10, CV_8UC1, cv::Scalar(120))), {}));
+}
+
+}  // namespace
+}  // namespace lvslam::visual
