@@ -34,11 +34,17 @@ TEST(MultiMetricIcp, RecoversAKnownTransformToAMillimetreScale) {
                                 .toRotationMatrix();
   const Eigen::Isometry3d T_world_b = T_world_a * makePose(R, Eigen::Vector3d(0.35, -0.15, 0.05));
   const FeatureFrame b = staticFrame(scene, T_world_b, config, 1);
-  const IcpResult result = registerMultiMetric(b.points, map, T_world_a, 1.0, config.registration);
-  const Eigen::Isometry3d error = T_world_b.inverse() * result.T_world_lidar;
-  EXPECT_LT(error.translation().norm(), 0.01);
-  EXPECT_LT(rotationAngle(error) * 180.0 / M_PI, 0.1);
-  EXPECT_FALSE(result.degenerate);
+  // Searching neighbours every iteration, or only after the pose moved.
+  for (const double reassociate_motion : {0.0, 0.02}) {
+    RegistrationConfig registration = config.registration;
+    registration.reassociate_motion = reassociate_motion;
+    const IcpResult result = registerMultiMetric(b.points, map, T_world_a, 1.0, registration);
+    const Eigen::Isometry3d error = T_world_b.inverse() * result.T_world_lidar;
+    EXPECT_LT(error.translation().norm(), 0.01) << reassociate_motion;
+    EXPECT_LT(rotationAngle(error) * 180.0 / M_PI, 0.1) << reassociate_motion;
+    EXPECT_FALSE(result.degenerate);
+    EXPECT_TRUE(result.converged) << reassociate_motion;
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include <tbb/parallel_for.h>
 
@@ -26,7 +27,7 @@ struct RingRange {
 };
 
 // The outermost rings end the view: a strip along them is an edge of the view.
-bool crossesRings(std::vector<int>& rings, const RingRange& range) {
+bool crossesRings(std::span<int> rings, const RingRange& range) {
   if (rings.empty() || rings.front() < 0) return true;  // no ring data: trust the shape
   std::sort(rings.begin(), rings.end());
   if (rings.front() == range.lowest || rings.back() == range.highest) return false;
@@ -48,30 +49,28 @@ struct Classified {
 // PCA over the k nearest neighbours within the radius (MULLS's neighbourhood).
 Classified classifyPoint(const std::vector<TimedPoint>& cloud, const PointKdTree<TimedPoint>& tree,
                          std::size_t index, const RingRange& ring_range, const FeatureConfig& config) {
-  const std::size_t k = static_cast<std::size_t>(config.neighbours);
-  std::array<std::size_t, 64> ids{};
-  std::array<float, 64> dist_sq{};
-  const std::size_t found = tree.knnSearch(cloud[index].p.data(), std::min<std::size_t>(k, ids.size()), ids.data(),
-                                           dist_sq.data());
-  const float radius_sq = static_cast<float>(config.neighbour_radius * config.neighbour_radius);
-  std::vector<Eigen::Vector3f> neighbours;
-  std::vector<int> rings;
-  neighbours.reserve(found);
+  constexpr std::size_t kMaxNeighbours = 64;
+  std::array<std::size_t, kMaxNeighbours> ids{};
+  std::array<float, kMaxNeighbours> dist_sq{};
+  const std::size_t found =
+      knnWithinRadius(tree, cloud[index].p.data(), std::min(static_cast<std::size_t>(config.neighbours), kMaxNeighbours),
+                      static_cast<float>(config.neighbour_radius), ids.data(), dist_sq.data());
+  std::array<Eigen::Vector3f, kMaxNeighbours> neighbours;
+  std::array<int, kMaxNeighbours> rings{};
   for (std::size_t j = 0; j < found; ++j) {
-    if (dist_sq[j] > radius_sq) continue;
-    neighbours.push_back(cloud[ids[j]].p);
-    rings.push_back(cloud[ids[j]].ring);
+    neighbours[j] = cloud[ids[j]].p;
+    rings[j] = cloud[ids[j]].ring;
   }
   Classified result;
-  if (static_cast<int>(neighbours.size()) < config.min_neighbours) return result;
-  const LocalShape shape = shapeOf(neighbours);
+  if (static_cast<int>(found) < config.min_neighbours) return result;
+  const LocalShape shape = shapeOf(std::span<const Eigen::Vector3f>(neighbours.data(), found));
   if (!shape.valid) return result;
   Eigen::Vector3f direction;
   const auto cls = classifyShape(shape, config, direction);
   if (!cls) return result;
   // A strip of one or two scan lines on a wall or a far ceiling is "linear"
   // by its eigenvalues, but the line is the scan pattern's, not the scene's.
-  if (isLinear(*cls) && !crossesRings(rings, ring_range)) return result;
+  if (isLinear(*cls) && !crossesRings(std::span<int>(rings.data(), found), ring_range)) return result;
   result.valid = true;
   result.point.p = cloud[index].p;
   result.point.time = cloud[index].time;
@@ -152,11 +151,17 @@ std::vector<FeaturePoint> extractFeatures(const std::vector<TimedPoint>& points,
     const PointCloudAdaptor<TimedPoint> adaptor{points};
     PointKdTree<TimedPoint> tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
     tree.buildIndex();
-    std::vector<Classified> classified(off_ground.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, off_ground.size(), 256),
+    // Per-class downsampling keeps one point per voxel anyway: PCA only on one
+    // candidate per (smaller) voxel, the dominant cost on dense outdoor scans.
+    const std::vector<std::size_t> candidates =
+        config.candidate_voxel > 0.0
+            ? voxelDownsample(off_ground, config.candidate_voxel, [&](std::size_t i) { return points[i].p; })
+            : off_ground;
+    std::vector<Classified> classified(candidates.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 256),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         for (std::size_t i = range.begin(); i != range.end(); ++i)
-                          classified[i] = classifyPoint(points, tree, off_ground[i], rings, config);
+                          classified[i] = classifyPoint(points, tree, candidates[i], rings, config);
                       });
     for (const Classified& c : classified)
       if (c.valid) features.push_back(c.point);

@@ -22,7 +22,8 @@ std::map<std::string, FieldTable> fieldTables(LidarOdometryConfig& c) {
   auto& m = c.local_map;
   return {
       {"", {{"deskew", &c.deskew}, {"recent_frames", &c.recent_frames}, {"max_time_gap", &c.max_time_gap}}},
-      {"preprocess", {{"min_range", &p.min_range}, {"max_range", &p.max_range}, {"voxel_size", &p.voxel_size}}},
+      {"preprocess", {{"min_range", &p.min_range}, {"max_range", &p.max_range}, {"voxel_size", &p.voxel_size},
+        {"voxel_angle_deg", &p.voxel_angle_deg}}},
       {"ground",
        {{"grid_size", &g.grid_size}, {"height_threshold", &g.height_threshold},
         {"inlier_distance", &g.inlier_distance},
@@ -30,14 +31,16 @@ std::map<std::string, FieldTable> fieldTables(LidarOdometryConfig& c) {
         {"max_sensor_height", &g.max_sensor_height}}},
       {"features",
        {{"neighbours", &f.neighbours}, {"neighbour_radius", &f.neighbour_radius},
-        {"min_neighbours", &f.min_neighbours}, {"linearity_threshold", &f.linearity_threshold},
+        {"min_neighbours", &f.min_neighbours}, {"candidate_voxel", &f.candidate_voxel},
+        {"linearity_threshold", &f.linearity_threshold},
         {"planarity_threshold", &f.planarity_threshold}, {"curvature_threshold", &f.curvature_threshold},
         {"vertical_cos", &f.vertical_cos}, {"horizontal_cos", &f.horizontal_cos},
         {"ground_voxel", &f.ground_voxel}, {"planar_voxel", &f.planar_voxel},
         {"linear_voxel", &f.linear_voxel}, {"vertex_voxel", &f.vertex_voxel}}},
       {"registration",
        {{"max_iterations", &r.max_iterations}, {"converged_translation", &r.converged_translation},
-        {"converged_rotation", &r.converged_rotation}, {"initial_threshold", &r.initial_threshold},
+        {"converged_rotation", &r.converged_rotation},
+        {"reassociate_motion", &r.reassociate_motion}, {"initial_threshold", &r.initial_threshold},
         {"min_threshold", &r.min_threshold}, {"max_threshold", &r.max_threshold},
         {"degeneracy_ratio", &r.degeneracy_ratio}, {"min_correspondences", &r.min_correspondences},
         {"min_inlier_ratio", &r.min_inlier_ratio},
@@ -99,6 +102,8 @@ void validate(const LidarOdometryConfig& c, const std::string& where) {
   require(c.preprocess.min_range >= 0 && c.preprocess.max_range > c.preprocess.min_range, where,
           k + "preprocess': need 0 <= min_range < max_range");
   require(c.preprocess.voxel_size > 0, where, k + "preprocess.voxel_size': must be positive");
+  require(c.preprocess.voxel_angle_deg >= 0 && c.preprocess.voxel_angle_deg < 45, where,
+          k + "preprocess.voxel_angle_deg': must be in [0, 45)");
   require(c.ground.grid_size > 0 && c.ground.height_threshold > 0 && c.ground.inlier_distance > 0, where,
           k + "ground': grid_size, height_threshold and inlier_distance must be positive");
   require(c.features.neighbours >= 3 && c.features.min_neighbours >= 3 &&
@@ -107,7 +112,10 @@ void validate(const LidarOdometryConfig& c, const std::string& where) {
   require(c.features.ground_voxel > 0 && c.features.planar_voxel > 0 && c.features.linear_voxel > 0 &&
               c.features.vertex_voxel > 0 && c.features.neighbour_radius > 0,
           where, k + "features': voxel sizes and neighbour_radius must be positive");
+  require(c.features.candidate_voxel >= 0, where, k + "features.candidate_voxel': must not be negative");
   require(c.registration.max_iterations > 0, where, k + "registration.max_iterations': must be positive");
+  require(c.registration.reassociate_motion >= 0, where,
+          k + "registration.reassociate_motion': must not be negative");
   require(c.registration.min_threshold > 0 && c.registration.min_threshold <= c.registration.max_threshold,
           where, k + "registration': need 0 < min_threshold <= max_threshold");
   require(c.local_map.voxel_size > 0 && c.local_map.max_points_per_voxel > 0 && c.local_map.radius > 0 &&

@@ -28,17 +28,29 @@ void LocalMap::insert(const FeatureFrame& frame) {
 }
 
 void LocalMap::prune(const Eigen::Vector3f& sensor_position, std::uint32_t newest_seq) {
-  const float radius_sq = static_cast<float>(config_.radius * config_.radius);
+  const float radius = static_cast<float>(config_.radius);
+  const float radius_sq = radius * radius;
   const std::uint32_t age = static_cast<std::uint32_t>(config_.max_frame_age);
   const std::uint32_t oldest_seq = newest_seq > age ? newest_seq - age : 0;
+  const float voxel = static_cast<float>(config_.voxel_size);
+  const float half_diagonal = 0.5f * std::sqrt(3.0f) * voxel;
   for (auto it = voxels_.begin(); it != voxels_.end();) {
     std::vector<MapPoint>& cell = it.value();
-    std::erase_if(cell, [&](const MapPoint& mp) {
-      return frameOf(mp.id) < oldest_seq || (mp.p - sensor_position).squaredNorm() > radius_sq;
+    // Points enter a voxel in frame order, so its first point is its oldest;
+    // a young voxel wholly inside the radius keeps everything.
+    const Eigen::Vector3f centre = (it->first.cast<float>() + Eigen::Vector3f::Constant(0.5f)) * voxel;
+    if (frameOf(cell.front().id) >= oldest_seq && (centre - sensor_position).norm() + half_diagonal < radius) {
+      ++it;
+      continue;
+    }
+    const auto removed = std::erase_if(cell, [&](const MapPoint& mp) {
+      const bool drop = frameOf(mp.id) < oldest_seq || (mp.p - sensor_position).squaredNorm() > radius_sq;
+      if (drop) refined_ -= mp.refined ? 1 : 0;
+      return drop;
     });
+    size_ -= removed;
     it = cell.empty() ? voxels_.erase(it) : std::next(it);
   }
-  recount();
 }
 
 // Paper, "Improved storage of fusion-enhanced point cloud": above a rate alpha

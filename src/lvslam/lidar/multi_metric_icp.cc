@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
 namespace lvslam::lidar {
@@ -41,19 +42,26 @@ void addResidual(NormalEquations& eq, const Eigen::Matrix<double, Rows, 3>& A, c
   ++eq.count;
 }
 
-void addCorrespondence(NormalEquations& eq, const FeaturePoint& fp, const Eigen::Isometry3d& T, const LocalMap& map,
+// Nearest map point of the same class within the threshold, or nullptr.
+const MapPoint* associate(const FeaturePoint& fp, const Eigen::Isometry3d& T, const LocalMap& map, float threshold,
+                          const RegistrationConfig& config) {
+  if (fp.cls == FeatureClass::kBeam && config.beam_weight <= 0.0) return nullptr;
+  return map.nearest((T * fp.p.cast<double>()).cast<float>(), fp.cls, threshold);
+}
+
+void addCorrespondence(NormalEquations& eq, const FeaturePoint& fp, const MapPoint* m, const Eigen::Isometry3d& T,
                        float threshold, double kernel, double min_cos, const RegistrationConfig& config) {
+  if (m == nullptr) return;
   const Eigen::Vector3d p = fp.p.cast<double>();
   const Eigen::Vector3d q = T * p;
-  if (fp.cls == FeatureClass::kBeam && config.beam_weight <= 0.0) return;
-  const MapPoint* m = map.nearest(q.cast<float>(), fp.cls, threshold);
-  if (m == nullptr) return;
+  const Eigen::Vector3d mp = m->p.cast<double>();
+  // A kept association must still be within reach.
+  if ((q - mp).squaredNorm() > static_cast<double>(threshold) * threshold) return;
   // Points across an edge share a class but not a surface: their directions disagree.
   const Eigen::Vector3d source_direction = T.linear() * fp.direction.cast<double>();
   if (fp.cls != FeatureClass::kVertex && std::abs(source_direction.dot(m->direction.cast<double>())) < min_cos) return;
   Eigen::Matrix<double, 3, 6> dq;
   dq << T.linear(), -T.linear() * skew(p);
-  const Eigen::Vector3d mp = m->p.cast<double>();
   if (isPlanar(fp.cls)) {
     addResidual<1>(eq, m->direction.cast<double>().transpose(), q, dq, mp, kernel, 1.0);
   } else if (isLinear(fp.cls)) {
@@ -67,8 +75,20 @@ void addCorrespondence(NormalEquations& eq, const FeaturePoint& fp, const Eigen:
   }
 }
 
-NormalEquations buildNormalEquations(const std::vector<FeaturePoint>& source, const LocalMap& map,
-                                     const Eigen::Isometry3d& T, double threshold, const RegistrationConfig& config) {
+void associateAll(const std::vector<FeaturePoint>& source, const LocalMap& map, const Eigen::Isometry3d& T,
+                  double threshold, const RegistrationConfig& config, std::vector<const MapPoint*>& matches) {
+  matches.resize(source.size());
+  const auto th = static_cast<float>(threshold);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, source.size(), 128),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i)
+                        matches[i] = associate(source[i], T, map, th, config);
+                    });
+}
+
+NormalEquations buildNormalEquations(const std::vector<FeaturePoint>& source,
+                                     const std::vector<const MapPoint*>& matches, const Eigen::Isometry3d& T,
+                                     double threshold, const RegistrationConfig& config) {
   const double kernel = threshold / 3.0;
   const auto th = static_cast<float>(threshold);
   const double min_cos = std::cos(config.max_normal_angle_deg * M_PI / 180.0);
@@ -76,10 +96,17 @@ NormalEquations buildNormalEquations(const std::vector<FeaturePoint>& source, co
       tbb::blocked_range<std::size_t>(0, source.size(), 128), NormalEquations{},
       [&](const tbb::blocked_range<std::size_t>& range, NormalEquations eq) {
         for (std::size_t i = range.begin(); i != range.end(); ++i)
-          addCorrespondence(eq, source[i], T, map, th, kernel, min_cos, config);
+          addCorrespondence(eq, source[i], matches[i], T, th, kernel, min_cos, config);
         return eq;
       },
       [](NormalEquations a, const NormalEquations& b) { return a += b; });
+}
+
+// How far the pose moved since the last association, as the displacement of
+// a point kRotationScale metres away.
+double motionBetween(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  const Eigen::Isometry3d delta = a.inverse() * b;
+  return delta.translation().norm() + kRotationScale * rotationAngle(delta);
 }
 
 }  // namespace
@@ -116,8 +143,16 @@ IcpResult registerMultiMetric(const std::vector<FeaturePoint>& source, const Loc
                               const RegistrationConfig& config) {
   IcpResult result;
   result.T_world_lidar = T_world_lidar_guess;
+  std::vector<const MapPoint*> matches;
+  Eigen::Isometry3d T_associated = T_world_lidar_guess;
   for (int iteration = 0; iteration < config.max_iterations; ++iteration) {
-    const NormalEquations eq = buildNormalEquations(source, map, result.T_world_lidar, threshold, config);
+    // Near convergence the nearest neighbours no longer change: keep them
+    // while the pose moved less than reassociate_motion (LOAM-style).
+    if (iteration == 0 || motionBetween(T_associated, result.T_world_lidar) > config.reassociate_motion) {
+      associateAll(source, map, result.T_world_lidar, threshold, config, matches);
+      T_associated = result.T_world_lidar;
+    }
+    const NormalEquations eq = buildNormalEquations(source, matches, result.T_world_lidar, threshold, config);
     result.iterations = iteration + 1;
     result.correspondences = eq.count;
     result.rms_residual = eq.count > 0 ? std::sqrt(eq.squared_error / eq.count) : 0.0;

@@ -13,6 +13,15 @@ namespace lvslam::lidar {
 // Times are zero when the scan has none.
 std::vector<TimedPoint> cropAndDownsample(const LidarScan& scan, const PreprocessConfig& config);
 
+// Voxel edge used at this range: voxel_size, or the size that the angle
+// voxel_angle_deg spans at the far edge of the point's 5 m range band when larger.
+double voxelSizeAt(double range, const PreprocessConfig& config);
+
+// One point per voxel of voxelSizeAt(range): far returns, dense along a ring
+// but sparse across rings, are thinned along the ring. Non-finite points and
+// points beyond 100 km are dropped (with voxel_angle_deg 0: plain voxelDownsample).
+std::vector<TimedPoint> rangeAdaptiveDownsample(const std::vector<TimedPoint>& points, const PreprocessConfig& config);
+
 // Keeps the first point of each voxel of the given size, in input order.
 template <typename Point, typename PositionOf>
 std::vector<Point> voxelDownsample(const std::vector<Point>& points, double voxel_size, PositionOf position_of);
