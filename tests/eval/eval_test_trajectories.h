@@ -23,6 +23,12 @@ inline Trajectory makeSpiral(int count) {
 }
 
 // Poses along +x with identity orientation at the given positions.
+inline std::vector<double> evenlySpaced(int count, double step) {
+  std::vector<double> xs;
+  for (int k = 0; k < count; ++k) xs.push_back(step * k);
+  return xs;
+}
+
 inline std::vector<Eigen::Isometry3d> posesAlongX(const std::vector<double>& xs) {
   std::vector<Eigen::Isometry3d> poses;
   for (const double x : xs) poses.push_back(makePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(x, 0, 0)));

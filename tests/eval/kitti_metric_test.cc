@@ -10,13 +10,9 @@
 namespace lvslam::eval {
 namespace {
 
+using testing::evenlySpaced;
 using testing::posesAlongX;
 
-std::vector<double> evenlySpaced(int count, double step) {
-  std::vector<double> xs;
-  for (int k = 0; k < count; ++k) xs.push_back(step * k);
-  return xs;
-}
 
 // On a 1 m-step straight line of 1001 frames, a segment of length L from
 // frame f ends at f + L + 1 (the devkit wants the path to exceed L), so it

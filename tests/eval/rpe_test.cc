@@ -10,13 +10,9 @@
 namespace lvslam::eval {
 namespace {
 
+using testing::evenlySpaced;
 using testing::posesAlongX;
 
-std::vector<double> evenlySpaced(int count, double step) {
-  std::vector<double> xs;
-  for (int k = 0; k < count; ++k) xs.push_back(step * k);
-  return xs;
-}
 
 TEST(RpePairs, FollowEvoFilterPairsByPath) {
   // Steps 3,3,3,3,5,5,2,2,2,2,2,4,4,4 with delta 6: a mark each time the path

@@ -55,11 +55,7 @@ class PointReprojectionCost final : public ceres::SizedCostFunction<2, kPoseBloc
       return false;
     }
     Eigen::Map<Eigen::Vector2d>{residuals} = r;
-    if (want_pose) {
-      Eigen::Map<Eigen::Matrix<double, 2, kPoseBlockSize, Eigen::RowMajor>> J(jacobians[0]);
-      J.leftCols<6>() = J_pose;
-      J.col(6).setZero();
-    }
+    if (want_pose) writePoseJacobian(J_pose, jacobians[0]);
     if (want_point) Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>>{jacobians[1]} = J_point;
     return true;
   }
