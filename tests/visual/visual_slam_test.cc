@@ -125,6 +125,37 @@ TEST_F(VisualSlamTest, BlackFramesLoseTrackingThenANewMapStarts) {
   EXPECT_LT(eval::evaluate(after_truth, after, options).ate.stats.rmse, 0.05);
 }
 
+// A short blackout while the camera keeps moving: the frame is relocalised
+// into the old map (same map id, same world frame), not re-initialised.
+TEST_F(VisualSlamTest, ABlackoutIsRelocalisedIntoTheOldMap) {
+  VisualSlam slam(VisualSlamConfig{}, camera());
+  Trajectory estimate, truth;
+  const size_t half = frames_->size() / 2, blackout = 5;
+  run(slam, 0, half, estimate, truth);
+  ASSERT_EQ(slam.state(), TrackingState::kTracking);
+  for (size_t i = half; i < half + blackout; ++i) {
+    const ImageFrame black{(*frames_)[i].image.timestamp, cv::Mat::zeros(camera().height(), camera().width(), CV_8UC1)};
+    EXPECT_FALSE(slam.track(black).pose_valid);
+  }
+  EXPECT_EQ(slam.state(), TrackingState::kLost);
+  std::vector<VisualFrameResult> results;
+  Trajectory after, after_truth;
+  run(slam, half + blackout, frames_->size(), after, after_truth, &results);
+  ASSERT_FALSE(results.empty());
+  EXPECT_TRUE(results.front().pose_valid);  // the first frame after the blackout
+  EXPECT_TRUE(std::all_of(results.begin(), results.end(), [](const auto& r) { return r.map_id == 0; }));
+  EXPECT_EQ(slam.mapId(), 0);
+  EXPECT_EQ(slam.state(), TrackingState::kTracking);
+  // One world frame before and after: a single SE3 alignment fits both parts.
+  for (const StampedPose& p : after) estimate.push_back(p);
+  for (const StampedPose& p : after_truth) truth.push_back(p);
+  eval::EvalOptions options;
+  options.alignment = eval::Alignment::kSE3;
+  const eval::EvalResult accuracy = eval::evaluate(truth, estimate, options);
+  EXPECT_LT(accuracy.ate.stats.rmse, 0.05);
+  EXPECT_LT(accuracy.ate.stats.max, 0.1);
+}
+
 TEST_F(VisualSlamTest, FusionLineBecomesALandmarkWithItsPluckerCoordinates) {
   VisualSlam slam(VisualSlamConfig{}, camera());
   Trajectory estimate, truth;

@@ -95,6 +95,19 @@ void VisualMap::removeLineObservation(int line, int keyframe) {
   removeObservation(find(lines_, line, "line"), &Keyframe::line_landmark, keyframe);
 }
 
+void VisualMap::replacePoint(int from, int into) {
+  if (from == into) return;
+  const std::vector<Observation> observations = find(points_, from, "point").observations;
+  const PointLandmark& target = find(points_, into, "point");
+  for (const Observation& o : observations) {
+    removePointObservation(from, o.keyframe);
+    const bool seen = std::any_of(target.observations.begin(), target.observations.end(),
+                                  [&](const Observation& t) { return t.keyframe == o.keyframe; });
+    if (!seen) addPointObservation(into, o.keyframe, o.index);
+  }
+  find(points_, from, "point").bad = true;
+}
+
 void VisualMap::removePoint(int point) {
   PointLandmark& p = find(points_, point, "point");
   while (!p.observations.empty()) removePointObservation(point, p.observations.back().keyframe);

@@ -26,6 +26,10 @@ class VisualMap {
   void addLineObservation(int line, int keyframe, int index);
   void removePointObservation(int point, int keyframe);
   void removeLineObservation(int line, int keyframe);
+  // Duplicate landmarks (ORB-SLAM's MapPoint::Replace): every keyframe
+  // observing `from` observes `into` instead (unless it already does), and
+  // `from` is marked bad. Throws lvslam::Error on unknown ids.
+  void replacePoint(int from, int into);
   // Marks the landmark bad and drops all its observations.
   void removePoint(int point);
   void removeLine(int line);

@@ -87,6 +87,9 @@ void LocalMapper::trimLines(VisualMap& map, const std::vector<int>& window) cons
 LocalMappingResult LocalMapper::process(VisualMap& map, int keyframe) {
   LocalMappingResult result;
   createLandmarks(map, keyframe, result);
+  const PointMergingResult merging = mergeWithNeighbours(map, keyframe, K_, config_.merging);
+  result.added_observations = merging.added;
+  result.merged_points = merging.merged;
   const std::vector<LineDepth> depths_before = lineDepths(map, keyframe);
   result.ba_usable = adjustLocalWindow(map, keyframe, K_, config_.window).usable;
   const std::vector<int> window = map.localWindow(keyframe, config_.window.window_size);

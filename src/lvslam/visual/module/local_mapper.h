@@ -12,15 +12,17 @@
 #include "lvslam/visual/module/line_depth_check.h"
 #include "lvslam/visual/module/line_landmark_creation.h"
 #include "lvslam/visual/module/map_culling.h"
+#include "lvslam/visual/module/point_merging.h"
 #include "lvslam/visual/module/point_triangulation.h"
 #include "lvslam/visual/optimize/local_window_adjustment.h"
 
 namespace lvslam::visual {
 
 struct LocalMapperConfig {
-  size_t point_neighbours = 5;  // covisible keyframes searched for new points
+  size_t point_neighbours = 10; // covisible keyframes searched for new points
   size_t line_neighbours = 2;   // ... and for new lines
   PointTriangulationConfig points;
+  PointMergingConfig merging;
   LineCreationConfig lines;
   LineMatcherConfig line_matching;
   LocalWindowConfig window;
@@ -31,6 +33,7 @@ struct LocalMapperConfig {
 
 struct LocalMappingResult {
   int new_points = 0, new_lines = 0;
+  int added_observations = 0, merged_points = 0;
   int culled_points = 0, culled_lines = 0, depth_outlier_lines = 0;
   std::vector<int> removed_keyframes;
   bool ba_usable = false;

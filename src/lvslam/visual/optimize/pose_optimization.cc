@@ -179,6 +179,10 @@ PoseOptimizationResult optimizePose(const Eigen::Isometry3d& T_camera_world_init
   }
   result.num_inliers = static_cast<int>(std::count(result.point_inlier.begin(), result.point_inlier.end(), true) +
                                         std::count(result.line_inlier.begin(), result.line_inlier.end(), true));
+  // Re-project onto SO(3): tracking chains poses frame to frame (constant
+  // velocity = T_now * T_last^-1 with a transpose for the inverse), so a
+  // rounding drift away from a rotation would compound over a sequence.
+  if (T.matrix().allFinite()) T.linear() = Eigen::Quaterniond(T.linear()).normalized().toRotationMatrix();
   result.T_camera_world = T;
   result.success = T.matrix().allFinite() && result.num_inliers >= config.min_inliers;
   return result;

@@ -98,8 +98,12 @@ PassResult matchAndOptimize(const VisualMap& map, const Projection& proj, const 
 }  // namespace
 
 LocalMap collectLocalMap(const VisualMap& map, int keyframe, size_t n, const std::vector<int>& extra_lines) {
+  return collectLocalMap(map, map.localWindow(keyframe, n), extra_lines);
+}
+
+LocalMap collectLocalMap(const VisualMap& map, const std::vector<int>& keyframes, const std::vector<int>& extra_lines) {
   std::set<int> points, lines(extra_lines.begin(), extra_lines.end());
-  for (const int kf : map.localWindow(keyframe, n)) {
+  for (const int kf : keyframes) {
     const Keyframe& k = map.keyframe(kf);
     for (const int p : k.point_landmark)
       if (p >= 0) points.insert(p);

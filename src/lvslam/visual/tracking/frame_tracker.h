@@ -46,6 +46,8 @@ struct LocalMap {
 // Landmarks seen by `keyframe` and its n - 1 best covisible neighbours, plus
 // `extra_lines` (fusion lines not yet observed by a keyframe).
 LocalMap collectLocalMap(const VisualMap& map, int keyframe, size_t n, const std::vector<int>& extra_lines);
+// Landmarks seen by any of `keyframes`, plus `extra_lines`.
+LocalMap collectLocalMap(const VisualMap& map, const std::vector<int>& keyframes, const std::vector<int>& extra_lines);
 
 struct FrameTrackingResult {
   bool success = false;

@@ -6,7 +6,9 @@
 #include "lvslam/core/se3.h"
 #include "lvslam/visual/feature/feature_extractor.h"
 #include "lvslam/visual/module/local_mapper.h"
+#include "lvslam/visual/optimize/solver_logging.h"
 #include "lvslam/visual/tracking/frame_tracker.h"
+#include "lvslam/visual/tracking/local_keyframes.h"
 
 namespace lvslam::visual {
 
@@ -94,12 +96,14 @@ struct VisualSlam::Impl {
   int last_keyframe_frame = 0;
   int lost_frames = 0;
   std::vector<FusionLineWait> fusion_lines;
+  std::vector<int> last_points;  // landmarks the last tracked frame observed
 
   VisualFrameResult track(const ImageFrame& frame, std::vector<PixelDepth> hints);
   void initialize(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
   void setReference(const std::vector<PixelDepth>& hints);
   bool trackFrame(VisualFrameResult& result);
   void recoverOrRestart(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
+  bool relocalize(VisualFrameResult& result);
   void loseTracking();
   void newMap();
   bool needKeyframe() const;
@@ -193,6 +197,9 @@ void VisualSlam::Impl::initialize(const std::vector<PixelDepth>& hints, VisualFr
   const int frames = std::max(1, frame_index - reference_frame);
   velocity = expSE3(logSE3(k2.T_camera_world) / frames);
   T_last = k2.T_camera_world;
+  last_points.clear();
+  for (const int id : k2.point_landmark)
+    if (id >= 0) last_points.push_back(id);
   reference_keyframe = built->keyframe2;
   last_keyframe_frame = frame_index;
   reference.reset();
@@ -217,7 +224,8 @@ std::vector<int> VisualSlam::Impl::pendingFusionLines() {
 
 bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
   if (!map.hasKeyframe(reference_keyframe)) return false;
-  const LocalMap local = collectLocalMap(map, reference_keyframe, config.local_keyframes, pendingFusionLines());
+  const LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.local_map);
+  const LocalMap local = collectLocalMap(map, keyframes.keyframes, pendingFusionLines());
   FrameTrackingResult tracked = trackLocalMap(map, local, velocity * T_last, K, 1.0, tracker, current);
   if (!tracked.success)  // fall back: no motion, wider window
     tracked = trackLocalMap(map, local, T_last, K, config.recovery_radius_scale, tracker, current);
@@ -230,6 +238,7 @@ bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
   for (const int id : current.line_landmark)
     if (id >= 0) found_lines.push_back(id);
   mapper.countTracking(tracked.visible_points, found_points, tracked.visible_lines, found_lines);
+  last_points = found_points;
   velocity = current.T_camera_world * T_last.inverse();
   T_last = current.T_camera_world;
   current_has_pose = true;
@@ -287,23 +296,45 @@ void VisualSlam::Impl::newMap() {
   state = TrackingState::kInitializing;
 }
 
+// Relocalisation without bag of words: the old map is projected around
+// several pose guesses (the motion model carried over the lost frames, the
+// last pose, the reference keyframe and its best covisible neighbours) with
+// a wide window, then the pose is optimised; the first guess giving enough
+// inliers wins and the map (and its id) is kept.
+bool VisualSlam::Impl::relocalize(VisualFrameResult& result) {
+  std::vector<Eigen::Isometry3d> guesses{T_last};
+  Eigen::Isometry3d extrapolated = T_last;
+  for (int i = 0; i <= lost_frames; ++i) extrapolated = velocity * extrapolated;
+  guesses.insert(guesses.begin(), extrapolated);
+  std::vector<int> candidates{reference_keyframe};
+  for (const int kf : map.covisibility().bestNeighbours(reference_keyframe, config.relocalize_candidates))
+    candidates.push_back(kf);
+  for (const int kf : candidates) guesses.push_back(map.keyframe(kf).T_camera_world);
+  const LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.local_map);
+  const LocalMap local = collectLocalMap(map, keyframes.keyframes, {});
+  for (const Eigen::Isometry3d& guess : guesses) {
+    const FrameTrackingResult tracked =
+        trackLocalMap(map, local, guess, K, config.recovery_radius_scale, tracker, current);
+    if (!tracked.success || current.point_inliers < config.relocalize_min_inliers) continue;
+    state = TrackingState::kTracking;
+    velocity = Eigen::Isometry3d::Identity();
+    T_last = current.T_camera_world;
+    current_has_pose = true;
+    lost_frames = 0;
+    last_points.clear();
+    for (const int id : current.point_landmark)
+      if (id >= 0) last_points.push_back(id);
+    result.inlier_ratio =
+        static_cast<double>(current.point_inliers + current.line_inliers) / std::max(1, tracked.matches);
+    return true;
+  }
+  current.point_inliers = current.line_inliers = 0;
+  return false;
+}
+
 void VisualSlam::Impl::recoverOrRestart(const std::vector<PixelDepth>& hints, VisualFrameResult& result) {
   if (lost_frames <= config.relocalize_frames && map.hasKeyframe(reference_keyframe)) {
-    // Relocalisation without bag of words: the old local map from the last pose, wide window.
-    const LocalMap local = collectLocalMap(map, reference_keyframe, config.local_keyframes, {});
-    const FrameTrackingResult tracked =
-        trackLocalMap(map, local, T_last, K, config.recovery_radius_scale, tracker, current);
-    if (tracked.success) {
-      state = TrackingState::kTracking;
-      velocity = Eigen::Isometry3d::Identity();
-      T_last = current.T_camera_world;
-      current_has_pose = true;
-      lost_frames = 0;
-      result.inlier_ratio =
-          static_cast<double>(current.point_inliers + current.line_inliers) / std::max(1, tracked.matches);
-      return;
-    }
-    ++lost_frames;
+    if (!relocalize(result)) ++lost_frames;
     return;
   }
   newMap();
@@ -311,7 +342,9 @@ void VisualSlam::Impl::recoverOrRestart(const std::vector<PixelDepth>& hints, Vi
 }
 
 VisualSlam::VisualSlam(const VisualSlamConfig& config, const PinholeCamera& camera)
-    : impl_(std::make_unique<Impl>(config, camera)) {}
+    : impl_(std::make_unique<Impl>(config, camera)) {
+  quietSolverLogging();
+}
 VisualSlam::~VisualSlam() = default;
 
 VisualFrameResult VisualSlam::track(const ImageFrame& frame) {
@@ -354,7 +387,11 @@ int VisualSlam::addFusionLine(int segment, const Eigen::Vector3d& A_camera, cons
   if (!s.current_has_pose) return -1;
   const Eigen::Isometry3d T_world_camera = s.current.T_camera_world.inverse();
   const Eigen::Vector3d d_fu = T_world_camera.linear() * direction_camera;
-  const int existing = s.current.line_landmark[segment];
+  // The segment may already observe a landmark, through the frame or, when
+  // the frame became a keyframe, one the mapper triangulated since.
+  int existing = s.current.line_landmark[segment];
+  if (existing < 0 && s.current_keyframe >= 0 && s.map.hasKeyframe(s.current_keyframe))
+    existing = s.map.keyframe(s.current_keyframe).line_landmark[segment];
   if (existing >= 0 && !s.map.line(existing).bad) {
     s.map.setFusionDirection(existing, d_fu);
     return existing;

@@ -23,6 +23,7 @@
 #include "lvslam/visual/module/map_culling.h"
 #include "lvslam/visual/module/point_triangulation.h"
 #include "lvslam/visual/tracking/image_statistics.h"
+#include "lvslam/visual/tracking/local_keyframes.h"
 #include "lvslam/visual/tracking/map_initialization.h"
 #include "lvslam/visual/visual_config.h"
 
@@ -48,8 +49,12 @@ struct VisualSlamConfig {
   double refine_radius_px = 5.0;
   double recovery_radius_scale = 3.0;  // wider window after a failure / when lost
   int min_tracked = 30;                // point + line inliers
-  size_t local_keyframes = 10;
-  int relocalize_frames = 8;  // lost this long: a new map
+  size_t local_keyframes = 10;  // the reference keyframe's window when relocalising
+  LocalKeyframeConfig local_map;  // keyframes tracked against (ORB-SLAM's local keyframes)
+  // Lost: relocalisation into the old map for this many frames, then a new map.
+  int relocalize_frames = 15;
+  size_t relocalize_candidates = 4;  // covisible neighbours of the reference keyframe tried as pose guesses
+  int relocalize_min_inliers = 50;   // point inliers to accept a relocalisation (ORB-SLAM: 50)
   // Keyframes (ORB-SLAM): tracked points below this share of the reference
   // keyframe's, or this many frames since the last keyframe.
   double keyframe_tracked_ratio = 0.9;
