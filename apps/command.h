@@ -16,5 +16,6 @@ void addConvertCommand(CLI::App& app, CommandAction& action);
 void addSimulateCommand(CLI::App& app, CommandAction& action);
 void addRunCommand(CLI::App& app, CommandAction& action);
 void addOverlayCommand(CLI::App& app, CommandAction& action);
+void addBenchCommand(CLI::App& app, CommandAction& action);
 
 }  // namespace lvslam::apps

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   lvslam::apps::addSimulateCommand(app, action);
   lvslam::apps::addRunCommand(app, action);
   lvslam::apps::addOverlayCommand(app, action);
+  lvslam::apps::addBenchCommand(app, action);
 
   try {
     app.parse(argc, argv);

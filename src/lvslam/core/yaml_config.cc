@@ -1,5 +1,6 @@
 #include "lvslam/core/yaml_config.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -33,6 +34,14 @@ YamlConfig YamlConfig::loadString(const std::string& text, const std::string& so
 
 std::string YamlConfig::childPath(const std::string& key) const {
   return key_path_.empty() ? key : key_path_ + "." + key;
+}
+
+void YamlConfig::requireKnownKeys(const std::vector<std::string>& known) const {
+  if (!node_.IsMap()) fail("expected a mapping");
+  for (const auto& item : node_) {
+    const std::string key = item.first.as<std::string>();
+    if (std::find(known.begin(), known.end(), key) == known.end()) fail("unknown key '" + key + "'");
+  }
 }
 
 void YamlConfig::fail(const std::string& why) const {

@@ -33,6 +33,10 @@ class YamlConfig {
   bool getBool(const std::string& key, bool fallback) const;
   std::string getString(const std::string& key, const std::string& fallback) const;
 
+  // A mapping whose keys are all among `known`, else fail() naming the first
+  // unknown key (catches typos that would silently keep a default).
+  void requireKnownKeys(const std::vector<std::string>& known) const;
+
   // Throws lvslam::Error(file, "key '<path>': <why>").
   [[noreturn]] void fail(const std::string& why) const;
 

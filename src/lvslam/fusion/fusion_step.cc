@@ -25,7 +25,7 @@ FusionFrameOutput FusionStep::processImage(double t_camera, const std::vector<Im
   FusionFrameOutput out;
   out.T_world_lidar = odometry.poseAt(t_camera);
   out.result = framework_.process(t_camera, out.T_world_lidar, segments);
-  out.lidar_points_changed = applyDirectionUpdates(odometry, out.result.lidar_updates);
+  if (lidar_feedback_) out.lidar_points_changed = applyDirectionUpdates(odometry, out.result.lidar_updates);
   return out;
 }
 

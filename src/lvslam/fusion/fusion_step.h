@@ -36,10 +36,15 @@ class FusionStep {
   FusionFrameOutput processImage(double t_camera, const std::vector<ImageSegment>& segments,
                                  lidar::LidarOdometry& odometry) const;
 
+  // Ablation: with the feedback off, processImage() leaves the LiDAR's
+  // linear points as they are (the updates are still reported).
+  void setLidarFeedback(bool on) { lidar_feedback_ = on; }
+
   const FusionFramework& framework() const { return framework_; }
 
  private:
   FusionFramework framework_;
+  bool lidar_feedback_ = true;
 };
 
 // End of a sweep in absolute time: the last point's time (the time stamp

@@ -12,6 +12,7 @@ std::string DetectionModule::problemWith(const VisualHealth& h, const std::optio
   if (h.contrast < c.min_contrast) return fmt::format("image without contrast (std {:.1f})", h.contrast);
   if (h.state == VisualState::kLost) return "visual tracking lost";
   if (h.state == VisualState::kInitializing) return "visual subsystem initializing";
+  if (!h.metric) return "visual map without metric scale (no LiDAR depth at its start)";
   if (h.tracked_points < c.min_tracked_points)
     return fmt::format("{} tracked points (< {})", h.tracked_points, c.min_tracked_points);
   if (h.tracked_lines < c.min_tracked_lines)

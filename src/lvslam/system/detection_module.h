@@ -20,6 +20,7 @@ struct VisualHealth {
   double inlier_ratio = 0.0;
   double brightness = 0.0;  // image mean, 0..255
   double contrast = 0.0;    // image standard deviation, 0..255
+  bool metric = true;       // the visual map's scale came from LiDAR depth
 };
 
 // How far the visual and LiDAR relative motions between the same two camera

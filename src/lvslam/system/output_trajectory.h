@@ -29,6 +29,11 @@ class OutputTrajectory {
   Eigen::Isometry3d add(const FrameEstimates& frame, OutputSource source);
 
   const Trajectory& trajectory() const { return trajectory_; }
+  // Where the visual map `map_id` sits in the output world, when it is the
+  // map anchored last.
+  std::optional<Eigen::Isometry3d> T_world_map(int map_id) const {
+    return map_id == anchored_map_id_ ? T_world_map_ : std::nullopt;
+  }
 
  private:
   std::optional<Eigen::Isometry3d> lidarIncrement(const FrameEstimates& frame) const;

@@ -1,0 +1,46 @@
+#pragma once
+// What each subsystem's thread records per camera frame and per scan. Each
+// thread writes only its own records (no sharing); the output is assembled
+// from them in frame order afterwards.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "lvslam/visual/tracking/visual_slam.h"
+
+namespace lvslam::system {
+
+// The visual thread's view of camera frame `index`.
+struct VisualFrameRecord {
+  double t = 0.0;
+  visual::VisualFrameResult result;
+  int fusion_lines_added = 0;  // landmarks created or given d_fu
+  double hints_ms = 0.0, track_ms = 0.0, fusion_apply_ms = 0.0;
+};
+
+// A fusion line kept for the line map: endpoints in the camera frame at t.
+struct CameraLine {
+  Eigen::Vector3d A = Eigen::Vector3d::Zero(), B = Eigen::Vector3d::Zero();
+};
+
+// The LiDAR thread's view of camera frame `index`.
+struct LidarFrameRecord {
+  double t = 0.0;
+  std::optional<Eigen::Isometry3d> T_odom_lidar;  // after the scan around t was registered
+  std::vector<CameraLine> fusion_lines;
+  std::size_t lidar_features = 0;   // accumulated features the fusion framework saw
+  std::size_t lidar_points_refined = 0;  // linear points given d_v_mean
+  double fusion_ms = 0.0;
+};
+
+struct ScanRecord {
+  double t = 0.0;
+  std::string status;
+  std::size_t features = 0, correspondences = 0;
+  int iterations = 0;
+  double prepare_ms = 0.0, register_ms = 0.0;
+};
+
+}  // namespace lvslam::system

@@ -1,0 +1,89 @@
+#include "lvslam/system/lidar_worker.h"
+
+#include "lvslam/core/se3.h"
+#include "lvslam/system/stopwatch.h"
+
+namespace lvslam::system {
+
+LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibration)
+    : odometry_(config.lidar), map_(config.map_voxel) {
+  if (config.mode == RunMode::kFused && calibration.camera) {
+    fusion_.emplace(*calibration.camera, calibration.T_camera_lidar, config.fusion);
+    fusion_->setLidarFeedback(config.lidar_direction_refinement);
+  }
+}
+
+void LidarWorker::addScan(const LidarScan& scan) {
+  registerPending();
+  const Stopwatch watch;
+  odometry_.prepare(scan);
+  if (fusion_) fusion_->loadScans(odometry_);
+  pending_prepare_ms_ = watch.ms();
+  scan_pending_ = true;
+}
+
+fusion::FusionResult LidarWorker::addFrame(double t, const std::vector<fusion::ImageSegment>& segments) {
+  LidarFrameRecord record;
+  record.t = t;
+  fusion::FusionResult result;
+  if (fusion_ && scan_pending_) {
+    const Stopwatch watch;
+    fusion::FusionFrameOutput out = fusion_->processImage(t, segments, odometry_);
+    record.fusion_ms = watch.ms();
+    record.lidar_features = out.result.lidar_features;
+    record.lidar_points_refined = out.lidar_points_changed;
+    for (const fusion::FusionLine& line : out.result.lines) record.fusion_lines.push_back({line.A, line.B});
+    result = std::move(out.result);
+  }
+  frames_waiting_.push_back(frames_.size());
+  frames_.push_back(std::move(record));
+  return result;
+}
+
+void LidarWorker::finish() {
+  registerPending();
+  poseWaitingFrames(true);
+}
+
+// Frames between two registered scans are interpolated between their poses;
+// at the end, frames after the last scan are extrapolated with the LiDAR
+// subsystem's constant-velocity motion.
+void LidarWorker::poseWaitingFrames(bool extrapolate) {
+  if (scan_trajectory_.empty()) return;
+  const StampedPose& last = scan_trajectory_.back();
+  std::vector<std::size_t> still_waiting;
+  for (const std::size_t index : frames_waiting_) {
+    LidarFrameRecord& frame = frames_[index];
+    if (frame.t <= last.t && scan_trajectory_.size() >= 2) {
+      const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
+      frame.T_odom_lidar = interpolateAtTime(frame.t, before.t, before.T_world_frame, last.t, last.T_world_frame);
+    } else if (frame.t <= last.t || extrapolate) {
+      frame.T_odom_lidar = odometry_.poseAt(frame.t);
+    } else {
+      still_waiting.push_back(index);
+    }
+  }
+  frames_waiting_ = std::move(still_waiting);
+}
+
+void LidarWorker::registerPending() {
+  if (!scan_pending_) return;
+  scan_pending_ = false;
+  const Stopwatch watch;
+  const lidar::OdometryResult result = odometry_.registerScan();
+  ScanRecord record;
+  record.t = result.timestamp;
+  record.status = lidar::statusName(result.status);
+  record.features = result.features;
+  record.correspondences = result.correspondences;
+  record.iterations = result.iterations;
+  record.prepare_ms = pending_prepare_ms_;
+  record.register_ms = watch.ms();
+  scans_.push_back(record);
+  if (result.status == lidar::OdometryStatus::kRejected) return;  // the frames wait for the next scan
+  scan_trajectory_.push_back({result.timestamp, result.T_world_lidar});
+  if (result.status != lidar::OdometryStatus::kLost) map_.add(odometry_.currentFrame());
+  poseWaitingFrames(false);
+}
+
+}  // namespace lvslam::system

@@ -1,0 +1,54 @@
+#pragma once
+// The LiDAR side of the dual system, run by one thread: the LiDAR subsystem
+// and, in fused mode, the fusion framework between its two steps (paper,
+// Fig. 2). Scans and camera frames arrive in time order; a scan is
+// registered when the next one arrives (or at finish()), after the fusion
+// framework has seen every camera frame of its sweep and refined its linear
+// points. Each camera frame gets the LiDAR pose at its time once the scans
+// before and after it are registered.
+#include <optional>
+#include <vector>
+
+#include "lvslam/core/calibration.h"
+#include "lvslam/fusion/fusion_step.h"
+#include "lvslam/lidar/lidar_odometry.h"
+#include "lvslam/system/frame_records.h"
+#include "lvslam/system/lidar_map_export.h"
+#include "lvslam/system/system_config.h"
+
+namespace lvslam::system {
+
+class LidarWorker {
+ public:
+  // Fusion runs when the mode is fused and the calibration has a camera.
+  LidarWorker(const SystemConfig& config, const Calibration& calibration);
+
+  void addScan(const LidarScan& scan);
+  // The next camera frame at time t. Segments (fused mode) go through the
+  // fusion framework, whose lines are returned (camera frame at t).
+  fusion::FusionResult addFrame(double t, const std::vector<fusion::ImageSegment>& segments);
+  // Registers the last scan: call once after the last scan and frame.
+  void finish();
+
+  const std::vector<ScanRecord>& scans() const { return scans_; }
+  const std::vector<LidarFrameRecord>& frames() const { return frames_; }
+  const LidarMapExport& map() const { return map_; }
+  // T_odom_lidar at each registered scan's time stamp.
+  const Trajectory& scanTrajectory() const { return scan_trajectory_; }
+
+ private:
+  void registerPending();
+  void poseWaitingFrames(bool extrapolate);
+
+  lidar::LidarOdometry odometry_;
+  std::optional<fusion::FusionStep> fusion_;
+  LidarMapExport map_;
+  bool scan_pending_ = false;
+  double pending_prepare_ms_ = 0.0;
+  std::vector<std::size_t> frames_waiting_;  // frames whose pose needs the pending scan
+  std::vector<ScanRecord> scans_;
+  std::vector<LidarFrameRecord> frames_;
+  Trajectory scan_trajectory_;
+};
+
+}  // namespace lvslam::system

@@ -1,0 +1,163 @@
+#include "lvslam/system/output_assembly.h"
+
+#include <cmath>
+
+#include "lvslam/system/output_trajectory.h"
+
+namespace lvslam::system {
+
+namespace {
+
+VisualState stateOf(visual::TrackingState state) {
+  switch (state) {
+    case visual::TrackingState::kTracking: return VisualState::kTracking;
+    case visual::TrackingState::kLost: return VisualState::kLost;
+    case visual::TrackingState::kInitializing: break;
+  }
+  return VisualState::kInitializing;
+}
+
+// Visual against LiDAR camera motion between two consecutive frames, when both know it.
+std::optional<MotionDisagreement> disagreement(const VisualFrameRecord& v0, const VisualFrameRecord& v1,
+                                               const LidarFrameRecord& l0, const LidarFrameRecord& l1,
+                                               const Eigen::Isometry3d& T_lidar_camera) {
+  const auto& r0 = v0.result;
+  const auto& r1 = v1.result;
+  if (!r0.pose_valid || !r1.pose_valid || r0.map_id != r1.map_id || !l0.T_odom_lidar || !l1.T_odom_lidar)
+    return std::nullopt;
+  const Eigen::Isometry3d visual_motion = r0.T_world_camera.inverse() * r1.T_world_camera;
+  const Eigen::Isometry3d lidar_motion =
+      T_lidar_camera.inverse() * (l0.T_odom_lidar->inverse() * *l1.T_odom_lidar) * T_lidar_camera;
+  const Eigen::Isometry3d difference = visual_motion.inverse() * lidar_motion;
+  const double angle = Eigen::AngleAxisd(difference.rotation()).angle();
+  return MotionDisagreement{difference.translation().norm(), angle * 180.0 / M_PI};
+}
+
+void lidarOutput(const PipelineRecords& records, const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
+  if (records.lidar.empty()) {  // no camera: the LiDAR's own trajectory
+    out.trajectory = records.T_odom_lidar_scans;
+    out.trajectory_is_camera = false;
+    return;
+  }
+  for (const LidarFrameRecord& l : records.lidar) {
+    FrameOutput frame{l.t, std::nullopt, OutputSource::kLidar, "mode lidar"};
+    if (l.T_odom_lidar) {
+      frame.T_world_camera = *l.T_odom_lidar * T_lidar_camera;
+      out.trajectory.push_back({l.t, *frame.T_world_camera});
+    }
+    out.frames.push_back(frame);
+  }
+}
+
+// Visual mode: each new map starts where the last one ended (the camera is
+// taken to have stood still while lost: no LiDAR to bridge the gap).
+void visualOutput(const PipelineRecords& records, SystemOutput& out, OutputTrajectory& output) {
+  bool any_pose = false;
+  for (const VisualFrameRecord& v : records.visual) {
+    FrameOutput frame{v.t, std::nullopt, OutputSource::kVisual, ""};
+    const auto& r = v.result;
+    if (r.pose_valid) {
+      if (r.initial_reference) {  // the map's first view, an earlier frame
+        const Eigen::Isometry3d T = output.add({r.initial_reference->t, r.initial_reference->T_world_frame, r.map_id,
+                                                std::nullopt},
+                                               OutputSource::kVisual);
+        for (FrameOutput& earlier : out.frames)
+          if (earlier.t == r.initial_reference->t) earlier.T_world_camera = T;
+      }
+      frame.T_world_camera = output.add({v.t, r.T_world_camera, r.map_id, std::nullopt}, OutputSource::kVisual);
+      out.metric = any_pose ? out.metric && r.metric : r.metric;
+      any_pose = true;
+    } else {
+      frame.problem = "visual tracking " + std::string(visual::trackingStateName(r.state));
+    }
+    out.frames.push_back(frame);
+  }
+  out.trajectory = output.trajectory();
+}
+
+void fusedOutput(const PipelineRecords& records, const SystemConfig& config, const Eigen::Isometry3d& T_lidar_camera,
+                 SystemOutput& out, OutputTrajectory& output) {
+  DetectionModule detection(config.detection);
+  for (std::size_t j = 0; j < records.visual.size(); ++j) {
+    const VisualFrameRecord& v = records.visual[j];
+    const LidarFrameRecord& l = records.lidar[j];
+    const auto disagree =
+        j == 0 ? std::nullopt : disagreement(records.visual[j - 1], v, records.lidar[j - 1], l, T_lidar_camera);
+    const OutputSource source = detection.update(healthOf(v), disagree);
+    FrameOutput frame{v.t, std::nullopt, source, detection.lastProblem()};
+    // Without any LiDAR pose yet nothing anchors the output world: skip.
+    if (l.T_odom_lidar || !output.trajectory().empty()) {
+      FrameEstimates estimates{v.t, std::nullopt, v.result.map_id, l.T_odom_lidar};
+      if (v.result.pose_valid) estimates.T_map_camera = v.result.T_world_camera;
+      frame.T_world_camera = output.add(estimates, source);
+    }
+    out.frames.push_back(frame);
+  }
+  out.trajectory = output.trajectory();
+  out.switches = detection.switches();
+}
+
+PlySegment coloured(const Eigen::Vector3d& a, const Eigen::Vector3d& b, unsigned char r, unsigned char g) {
+  PlySegment s;
+  s.a = a;
+  s.b = b;
+  s.r = r;
+  s.g = g;
+  s.b_colour = 0;
+  return s;
+}
+
+void addLines(const PipelineRecords& records, const std::optional<Eigen::Isometry3d>& T_world_map, SystemOutput& out) {
+  for (std::size_t j = 0; j < records.lidar.size() && j < out.frames.size(); ++j) {
+    const auto& T = out.frames[j].T_world_camera;
+    if (!T) continue;
+    for (const CameraLine& line : records.lidar[j].fusion_lines)
+      out.lines_world.push_back(coloured(*T * line.A, *T * line.B, 255, 0));
+  }
+  if (!T_world_map) return;
+  for (const MapLine& line : records.visual_lines)
+    out.lines_world.push_back(coloured(*T_world_map * line.start, *T_world_map * line.end, line.from_fusion ? 255 : 0,
+                                       line.from_fusion ? 160 : 255));
+}
+
+}  // namespace
+
+VisualHealth healthOf(const VisualFrameRecord& record) {
+  const visual::VisualFrameResult& r = record.result;
+  VisualHealth h;
+  h.t = record.t;
+  h.state = stateOf(r.state);
+  h.tracked_points = r.tracked_points;
+  h.tracked_lines = r.tracked_lines;
+  h.inlier_ratio = r.inlier_ratio;
+  h.brightness = r.brightness;
+  h.contrast = r.contrast;
+  h.metric = !r.pose_valid || r.metric;
+  return h;
+}
+
+SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& config,
+                            const Eigen::Isometry3d& T_camera_lidar) {
+  SystemOutput out;
+  const Eigen::Isometry3d T_lidar_camera = T_camera_lidar.inverse();
+  std::optional<Eigen::Isometry3d> T_world_map;
+  switch (config.mode) {
+    case RunMode::kLidar: lidarOutput(records, T_lidar_camera, out); break;
+    case RunMode::kVisual: {
+      OutputTrajectory output(Eigen::Isometry3d::Identity());  // no LiDAR: nothing to carry
+      visualOutput(records, out, output);
+      T_world_map = output.T_world_map(records.visual_map_id);
+      break;
+    }
+    case RunMode::kFused: {
+      OutputTrajectory output(T_lidar_camera);
+      fusedOutput(records, config, T_lidar_camera, out, output);
+      T_world_map = output.T_world_map(records.visual_map_id);
+      break;
+    }
+  }
+  addLines(records, T_world_map, out);
+  return out;
+}
+
+}  // namespace lvslam::system

@@ -1,0 +1,42 @@
+#pragma once
+// The system's output from the subsystems' per-frame records, frame by frame
+// in time order (each decision uses only that frame and earlier ones, as an
+// online system would): the detection module picks the visual or the LiDAR
+// odometry, OutputTrajectory keeps the trajectory continuous across switches.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lvslam/core/trajectory.h"
+#include "lvslam/io/ply_writer.h"
+#include "lvslam/system/detection_module.h"
+#include "lvslam/system/system_config.h"
+#include "lvslam/system/system_pipeline.h"
+
+namespace lvslam::system {
+
+struct FrameOutput {
+  double t = 0.0;
+  std::optional<Eigen::Isometry3d> T_world_camera;  // none: no estimate for this frame
+  OutputSource source = OutputSource::kLidar;
+  std::string problem;  // the detection module's reason when vision was not used
+};
+
+struct SystemOutput {
+  // T_world_camera per camera frame with an estimate; T_world_lidar per scan
+  // when the recording has no camera (lidar mode only).
+  Trajectory trajectory;
+  bool trajectory_is_camera = true;
+  bool metric = true;  // false: a monocular visual run without LiDAR depth
+  std::vector<FrameOutput> frames;  // per camera frame
+  std::vector<SwitchEvent> switches;
+  std::vector<PlySegment> lines_world;  // fusion lines (red) and the visual map's lines (green; orange from fusion)
+};
+
+SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& config,
+                            const Eigen::Isometry3d& T_camera_lidar);
+
+// Health figures of one visual frame for the detection module.
+VisualHealth healthOf(const VisualFrameRecord& record);
+
+}  // namespace lvslam::system

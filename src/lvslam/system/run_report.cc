@@ -1,0 +1,209 @@
+#include "lvslam/system/run_report.h"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "lvslam/core/error.h"
+#include "lvslam/eval/eval_report.h"
+#include "lvslam/eval/json_writer.h"
+#include "lvslam/io/tum.h"
+
+namespace lvslam::system {
+
+namespace {
+
+using eval::JsonObject;
+
+const char* sourceName(OutputSource s) { return s == OutputSource::kVisual ? "visual" : "lidar"; }
+
+std::string jsonList(const std::vector<std::string>& items) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ",\n  " : "\n  ") + items[i];
+  return out + (items.empty() ? "]" : "\n]");
+}
+
+std::string visualJson(const VisualFrameRecord& v) {
+  const visual::VisualFrameResult& r = v.result;
+  return JsonObject()
+      .addString("state", visual::trackingStateName(r.state))
+      .addRaw("pose", r.pose_valid ? "true" : "false")
+      .addNumber("map_id", r.map_id)
+      .addRaw("keyframe", r.keyframe ? "true" : "false")
+      .addNumber("keypoints", r.keypoints)
+      .addNumber("segments", r.segments)
+      .addNumber("tracked_points", r.tracked_points)
+      .addNumber("tracked_lines", r.tracked_lines)
+      .addNumber("inlier_ratio", r.inlier_ratio)
+      .addNumber("brightness", r.brightness)
+      .addNumber("contrast", r.contrast)
+      .addNumber("fusion_lines_added", v.fusion_lines_added)
+      .str();
+}
+
+std::string frameJson(const PipelineRecords& records, const SystemOutput& output, std::size_t j, bool timings) {
+  const FrameOutput& f = output.frames[j];
+  JsonObject o;
+  o.addNumber("t", f.t).addString("source", sourceName(f.source)).addRaw("pose", f.T_world_camera ? "true" : "false");
+  if (!f.problem.empty()) o.addString("problem", f.problem);
+  const VisualFrameRecord* v = j < records.visual.size() ? &records.visual[j] : nullptr;
+  const LidarFrameRecord* l = j < records.lidar.size() ? &records.lidar[j] : nullptr;
+  if (v) o.addRaw("visual", visualJson(*v));
+  if (l && v)
+    o.addRaw("fusion", JsonObject()
+                           .addCount("lines", l->fusion_lines.size())
+                           .addCount("lidar_features", l->lidar_features)
+                           .addCount("lidar_points_refined", l->lidar_points_refined)
+                           .str());
+  if (timings) {
+    JsonObject t;
+    if (v) t.addNumber("depth_hints", v->hints_ms).addNumber("visual", v->track_ms);
+    if (l && v) t.addNumber("fusion", l->fusion_ms).addNumber("fusion_lines_to_visual", v->fusion_apply_ms);
+    o.addRaw("time_ms", t.str());
+  }
+  return o.str();
+}
+
+std::string scanJson(const ScanRecord& s, bool timings) {
+  JsonObject o;
+  o.addNumber("t", s.t)
+      .addString("status", s.status)
+      .addCount("features", s.features)
+      .addCount("correspondences", s.correspondences)
+      .addNumber("iterations", s.iterations);
+  if (timings) o.addRaw("time_ms", JsonObject().addNumber("prepare", s.prepare_ms).addNumber("register", s.register_ms).str());
+  return o.str();
+}
+
+std::string summaryJson(const RunSummary& s, const std::optional<eval::EvalResult>& accuracy, bool timings) {
+  JsonObject o;
+  o.addString("mode", runModeName(s.mode))
+      .addCount("images", s.images)
+      .addCount("scans", s.scans)
+      .addCount("poses", s.poses)
+      .addCount("visual_output_frames", s.visual_output)
+      .addCount("visual_tracked_frames", s.visual_tracked)
+      .addCount("visual_maps", s.visual_maps)
+      .addCount("switches", s.switches)
+      .addNumber("fusion_lines_per_frame", s.fusion_lines_per_frame)
+      .addNumber("sequence_seconds", s.sequence_seconds)
+      .addNumber("lost_fraction", s.lost_fraction);
+  if (accuracy) o.addRaw("accuracy", eval::formatJson(*accuracy));
+  if (timings)
+    o.addNumber("wall_seconds", s.wall_seconds)
+        .addNumber("real_time_factor", s.real_time_factor)
+        .addNumber("peak_rss_mib", s.peak_rss_mib);
+  return o.str();
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream file(path);
+  file << text;
+  if (!file) throw Error(path.string(), "cannot write the file");
+}
+
+double lostFraction(const PipelineRecords& records, const SystemOutput& output, RunMode mode) {
+  const auto share = [](std::size_t part, std::size_t whole) {
+    return whole == 0 ? 1.0 : static_cast<double>(part) / static_cast<double>(whole);
+  };
+  if (mode == RunMode::kLidar) {
+    std::size_t lost = 0;
+    for (const ScanRecord& scan : records.scans) lost += scan.status == "lost" || scan.status == "rejected";
+    return share(lost, records.scans.size());
+  }
+  std::size_t missing = 0;
+  if (mode == RunMode::kVisual)
+    for (const VisualFrameRecord& v : records.visual) missing += !v.result.pose_valid;
+  else
+    for (const FrameOutput& f : output.frames) missing += !f.T_world_camera;
+  return share(missing, records.images);
+}
+
+}  // namespace
+
+RunSummary summarize(const PipelineRecords& records, const SystemOutput& output, RunMode mode, double wall_seconds) {
+  RunSummary s;
+  s.mode = mode;
+  s.images = records.images;
+  s.scans = records.scans_read;
+  for (const ScanRecord& scan : records.scans) ++s.lidar_statuses[scan.status];
+  s.poses = output.trajectory.size();
+  std::set<int> maps;
+  for (const VisualFrameRecord& v : records.visual) {
+    s.visual_tracked += v.result.pose_valid ? 1 : 0;
+    if (v.result.pose_valid) maps.insert(v.result.map_id);
+  }
+  s.visual_maps = maps.size();
+  if (mode == RunMode::kFused)
+    for (const FrameOutput& f : output.frames) s.visual_output += f.source == OutputSource::kVisual && f.T_world_camera;
+  if (mode == RunMode::kVisual) s.visual_output = s.visual_tracked;
+  std::size_t lines = 0;
+  for (const LidarFrameRecord& l : records.lidar) lines += l.fusion_lines.size();
+  s.fusion_lines_per_frame = records.lidar.empty() ? 0.0 : static_cast<double>(lines) / records.lidar.size();
+  s.switches = output.switches.size();
+  s.lost_fraction = lostFraction(records, output, mode);
+  s.sequence_seconds = records.last_time - records.first_time;
+  s.wall_seconds = wall_seconds;
+  s.real_time_factor = wall_seconds > 0.0 ? s.sequence_seconds / wall_seconds : 0.0;
+  s.peak_rss_mib = peakResidentMiB();
+  return s;
+}
+
+std::string formatRunSummary(const RunSummary& s, const SystemOutput& output) {
+  std::string text = fmt::format("mode {}: {} images, {} scans, {:.1f} s of data in {:.1f} s ({:.2f}x real time), "
+                                 "peak memory {:.0f} MiB\n",
+                                 runModeName(s.mode), s.images, s.scans, s.sequence_seconds, s.wall_seconds,
+                                 s.real_time_factor, s.peak_rss_mib);
+  if (!s.lidar_statuses.empty()) {
+    text += "lidar subsystem:";
+    for (const auto& [status, count] : s.lidar_statuses) text += fmt::format(" {} {},", status, count);
+    text.back() = '\n';
+  }
+  if (s.mode != RunMode::kLidar)
+    text += fmt::format("visual subsystem: tracked {} of {} frames ({:.1f} %), {} map(s)\n", s.visual_tracked,
+                        s.images, 100.0 * s.visual_tracked / std::max<std::size_t>(s.images, 1), s.visual_maps);
+  if (s.mode == RunMode::kFused) {
+    text += fmt::format("fusion: {:.2f} fusion lines per frame; output from vision for {} of {} frames, "
+                        "{} switch(es)\n",
+                        s.fusion_lines_per_frame, s.visual_output, s.images, s.switches);
+    for (const SwitchEvent& e : output.switches)
+      text += fmt::format("  t={:.3f} -> {}: {}\n", e.t, sourceName(e.to), e.reason);
+  }
+  return text;
+}
+
+void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records, const SystemOutput& output,
+                     const RunSummary& summary, const std::optional<eval::EvalResult>& accuracy,
+                     bool with_timings) {
+  const std::filesystem::path dir(out_dir);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw Error(out_dir, "cannot create the output folder: " + ec.message());
+  writeTum((dir / "trajectory.tum").string(), output.trajectory);
+  std::vector<std::string> frames, scans, switches;
+  for (std::size_t j = 0; j < output.frames.size(); ++j) frames.push_back(frameJson(records, output, j, with_timings));
+  for (const ScanRecord& s : records.scans) scans.push_back(scanJson(s, with_timings));
+  for (const SwitchEvent& e : output.switches)
+    switches.push_back(JsonObject().addNumber("t", e.t).addString("to", sourceName(e.to)).addString("reason", e.reason).str());
+  const std::string stats = JsonObject()
+                                .addRaw("summary", summaryJson(summary, accuracy, with_timings))
+                                .addRaw("switches", jsonList(switches))
+                                .addRaw("frames", jsonList(frames))
+                                .addRaw("scans", jsonList(scans))
+                                .str();
+  writeText(dir / "stats.json", stats + "\n");
+  writePointCloudPly((dir / "map.ply").string(), records.lidar_map);
+  writeLineSegmentsPly((dir / "lines.ply").string(), output.lines_world);
+}
+
+double peakResidentMiB() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // reported in kB
+  return 0.0;
+}
+
+}  // namespace lvslam::system

@@ -1,0 +1,51 @@
+#pragma once
+// What a run hands the user: trajectory.tum, stats.json (per frame and per
+// scan: stage times, subsystem in use, features, fusion lines), map.ply (the
+// LiDAR map), lines.ply (the 3D line map) and a summary of figures that the
+// CLI prints and `lvslam bench` tabulates.
+#include <map>
+#include <optional>
+#include <string>
+
+#include "lvslam/eval/evaluate.h"
+
+#include "lvslam/system/output_assembly.h"
+#include "lvslam/system/system_pipeline.h"
+
+namespace lvslam::system {
+
+struct RunSummary {
+  RunMode mode = RunMode::kFused;
+  std::size_t images = 0, scans = 0;
+  std::map<std::string, std::size_t> lidar_statuses;  // scans per odometry status
+  std::size_t poses = 0;           // output poses written
+  std::size_t visual_output = 0;   // camera frames whose output came from vision
+  std::size_t visual_tracked = 0;  // camera frames the visual subsystem tracked
+  std::size_t visual_maps = 0;     // maps the visual subsystem started
+  std::size_t switches = 0;
+  double fusion_lines_per_frame = 0.0;
+  double sequence_seconds = 0.0;   // span of the sensor data
+  double wall_seconds = 0.0;
+  double real_time_factor = 0.0;   // sequence seconds per wall second
+  double peak_rss_mib = 0.0;       // of the whole process so far
+  // Share of the mode's frames without an estimate: scans the LiDAR lost
+  // (lidar), frames vision did not track (visual), frames without output
+  // (fused). Above one half the paper's tables print x.
+  double lost_fraction = 0.0;
+};
+
+RunSummary summarize(const PipelineRecords& records, const SystemOutput& output, RunMode mode, double wall_seconds);
+
+// Several lines for the terminal, ending in a newline.
+std::string formatRunSummary(const RunSummary& summary, const SystemOutput& output);
+
+// Writes the four files into out_dir (created). Without timings (for
+// --deterministic) stats.json has no wall-clock figures, so runs compare byte for byte.
+// The accuracy, when given, goes into the summary of stats.json.
+void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records, const SystemOutput& output,
+                     const RunSummary& summary, const std::optional<eval::EvalResult>& accuracy, bool with_timings);
+
+// Peak resident memory of this process (VmHWM), MiB; 0 when unknown.
+double peakResidentMiB();
+
+}  // namespace lvslam::system

@@ -1,0 +1,75 @@
+#include "lvslam/system/system_config.h"
+
+#include "lvslam/core/error.h"
+
+namespace lvslam::system {
+
+const char* runModeName(RunMode mode) {
+  switch (mode) {
+    case RunMode::kLidar: return "lidar";
+    case RunMode::kVisual: return "visual";
+    case RunMode::kFused: return "fused";
+  }
+  return "?";
+}
+
+RunMode parseRunMode(const std::string& name, const std::string& where) {
+  if (name == "lidar") return RunMode::kLidar;
+  if (name == "visual") return RunMode::kVisual;
+  if (name == "fused") return RunMode::kFused;
+  throw Error(where, "unknown mode '" + name + "' (lidar, visual or fused)");
+}
+
+void applyAblation(SystemConfig& config, const std::string& name, const std::string& where) {
+  if (name == "direction-residual")
+    config.visual.visual.local_window.ba.use_direction_residual = false;
+  else if (name == "lidar-direction-refinement")
+    config.lidar_direction_refinement = false;
+  else if (name == "fusion-lines")
+    config.fusion_lines_in_tracking = false;
+  else
+    throw Error(where, "unknown ablation '" + name +
+                           "' (direction-residual, lidar-direction-refinement or fusion-lines)");
+}
+
+DetectionConfig loadDetectionConfig(const YamlConfig& n) {
+  n.requireKnownKeys({"min_tracked_points", "min_tracked_lines", "min_inlier_ratio", "min_brightness",
+                      "max_brightness", "min_contrast", "frames_to_recover", "max_disagreement_m",
+                      "max_disagreement_deg"});
+  DetectionConfig c;
+  c.min_tracked_points = n.getInt("min_tracked_points", c.min_tracked_points);
+  c.min_tracked_lines = n.getInt("min_tracked_lines", c.min_tracked_lines);
+  c.min_inlier_ratio = n.getDouble("min_inlier_ratio", c.min_inlier_ratio);
+  c.min_brightness = n.getDouble("min_brightness", c.min_brightness);
+  c.max_brightness = n.getDouble("max_brightness", c.max_brightness);
+  c.min_contrast = n.getDouble("min_contrast", c.min_contrast);
+  c.frames_to_recover = n.getInt("frames_to_recover", c.frames_to_recover);
+  c.max_disagreement_m = n.getDouble("max_disagreement_m", c.max_disagreement_m);
+  c.max_disagreement_deg = n.getDouble("max_disagreement_deg", c.max_disagreement_deg);
+  if (c.min_tracked_points < 0 || c.min_tracked_lines < 0) n.fail("tracked minima must not be negative");
+  if (!(c.min_inlier_ratio >= 0.0 && c.min_inlier_ratio <= 1.0)) n.fail("min_inlier_ratio must be in [0, 1]");
+  if (!(c.min_brightness < c.max_brightness)) n.fail("need min_brightness < max_brightness");
+  if (c.frames_to_recover < 1) n.fail("frames_to_recover must be at least 1");
+  if (!(c.max_disagreement_m > 0.0 && c.max_disagreement_deg > 0.0)) n.fail("disagreement bounds must be positive");
+  return c;
+}
+
+SystemConfig loadSystemConfig(const YamlConfig& root) {
+  SystemConfig c;
+  if (root.find("lidar")) c.lidar = lidar::loadLidarOdometryConfig(root);
+  if (const auto v = root.find("visual")) c.visual.visual = visual::loadVisualConfig(*v);
+  c.fusion = fusion::loadFusionConfig(root);
+  if (const auto d = root.find("detection")) c.detection = loadDetectionConfig(*d);
+  if (const auto s = root.find("system")) {
+    s->requireKnownKeys({"fusion_lines_in_tracking", "lidar_direction_refinement", "depth_hint_max_dt", "map_voxel"});
+    c.fusion_lines_in_tracking = s->getBool("fusion_lines_in_tracking", c.fusion_lines_in_tracking);
+    c.lidar_direction_refinement = s->getBool("lidar_direction_refinement", c.lidar_direction_refinement);
+    c.depth_hint_max_dt = s->getDouble("depth_hint_max_dt", c.depth_hint_max_dt);
+    c.map_voxel = s->getDouble("map_voxel", c.map_voxel);
+    if (!(c.depth_hint_max_dt > 0.0)) s->at("depth_hint_max_dt").fail("must be positive");
+    if (!(c.map_voxel > 0.0)) s->at("map_voxel").fail("must be positive");
+  }
+  return c;
+}
+
+}  // namespace lvslam::system

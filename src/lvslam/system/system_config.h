@@ -1,0 +1,48 @@
+#pragma once
+// Everything the dual system is configured with, one plain struct per box of
+// the paper's Fig. 1, and the switches of the ablation study. Loaded from the
+// sections lidar:, visual:, fusion:, detection: and system: of a YAML file;
+// absent sections keep the defaults, unknown keys are lvslam::Errors.
+#include <string>
+
+#include "lvslam/core/yaml_config.h"
+#include "lvslam/fusion/fusion_config.h"
+#include "lvslam/lidar/lidar_config.h"
+#include "lvslam/system/detection_module.h"
+#include "lvslam/visual/tracking/visual_slam.h"
+
+namespace lvslam::system {
+
+enum class RunMode { kLidar, kVisual, kFused };
+const char* runModeName(RunMode mode);
+// Throws lvslam::Error naming `where` for an unknown name.
+RunMode parseRunMode(const std::string& name, const std::string& where);
+
+struct SystemConfig {
+  RunMode mode = RunMode::kFused;
+  lidar::LidarOdometryConfig lidar;
+  visual::VisualSlamConfig visual;
+  fusion::FusionConfig fusion;
+  DetectionConfig detection;
+  // Ablations (each switches off one of the paper's contributions).
+  bool fusion_lines_in_tracking = true;    // fusion lines become visual landmarks
+  bool lidar_direction_refinement = true;  // d_v_mean reaches the LiDAR's linear points
+  // LiDAR points this close in time to an image give its depth hints.
+  double depth_hint_max_dt = 0.02;
+  double map_voxel = 0.2;  // m, voxel of the exported LiDAR map (map.ply)
+  // One thread, fixed order: byte-identical output for the same input.
+  bool deterministic = false;
+};
+
+// Switches off one contribution of the paper for the ablation study:
+// "direction-residual" (e_dir in bundle adjustment), "lidar-direction-
+// refinement" (d_v_mean), "fusion-lines" (fusion lines as visual landmarks).
+// Throws lvslam::Error naming `where` for another name.
+void applyAblation(SystemConfig& config, const std::string& name, const std::string& where);
+inline const char* const kAblations[] = {"direction-residual", "lidar-direction-refinement", "fusion-lines"};
+
+// `root` is the whole file; the mode and the deterministic flag come from the command line.
+SystemConfig loadSystemConfig(const YamlConfig& root);
+DetectionConfig loadDetectionConfig(const YamlConfig& section);
+
+}  // namespace lvslam::system

@@ -1,0 +1,262 @@
+#include "lvslam/system/system_pipeline.h"
+
+#include <atomic>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <variant>
+
+#include <tbb/global_control.h>
+
+#include "lvslam/core/error.h"
+#include "lvslam/system/bounded_queue.h"
+#include "lvslam/system/lidar_worker.h"
+#include "lvslam/system/visual_worker.h"
+
+namespace lvslam::system {
+
+namespace {
+
+using ScanPtr = std::shared_ptr<const LidarScan>;
+
+// The subsystems a mode runs (each absent when not needed).
+struct Workers {
+  std::unique_ptr<LidarWorker> lidar;
+  std::unique_ptr<VisualWorker> visual;
+};
+
+Workers makeWorkers(const SensorSource& source, const SystemConfig& config) {
+  const std::string where = std::string("mode ") + runModeName(config.mode);
+  const bool want_lidar = config.mode != RunMode::kVisual;
+  const bool want_visual = config.mode != RunMode::kLidar;
+  if (want_lidar && !source.hasLidar()) throw Error(where, "needs a recording with a LiDAR");
+  if (want_visual && !source.hasCamera()) throw Error(where, "needs a recording with a camera");
+  Workers workers;
+  const Calibration calibration = source.calibration();
+  if (want_lidar) workers.lidar = std::make_unique<LidarWorker>(config, calibration);
+  if (want_visual) workers.visual = std::make_unique<VisualWorker>(config, calibration, source.hasLidar());
+  return workers;
+}
+
+// One camera frame's exchange between the threads: the visual thread's line
+// segments to the LiDAR thread, the fusion framework's answer back.
+struct FrameExchange {
+  std::promise<std::vector<fusion::ImageSegment>> segments;
+  std::promise<fusion::FusionResult> fusion;
+  std::future<std::vector<fusion::ImageSegment>> segments_future = segments.get_future();
+  std::future<fusion::FusionResult> fusion_future = fusion.get_future();
+};
+using ExchangePtr = std::shared_ptr<FrameExchange>;
+
+template <typename T>
+void failPromise(std::promise<T>& promise, std::exception_ptr error) {
+  try {
+    promise.set_exception(error);
+  } catch (const std::future_error&) {
+    // Already answered: the other thread has what it needs.
+  }
+}
+
+struct LidarFrameJob {
+  double t = 0.0;
+  ExchangePtr exchange;  // null in lidar mode (no segments)
+};
+struct VisualFrameJob {
+  ImageFrame image;
+  ExchangePtr exchange;  // null in visual mode (no fusion)
+};
+using LidarJob = std::variant<ScanPtr, LidarFrameJob>;
+using VisualJob = std::variant<ScanPtr, VisualFrameJob>;
+
+// The first failure of any thread; the others then stop processing.
+class Failure {
+ public:
+  void record(std::exception_ptr error) {
+    std::lock_guard lock(mutex_);
+    if (!first_) first_ = error;
+    failed_ = true;
+  }
+  bool failed() const { return failed_; }
+  std::exception_ptr first() const { return first_; }
+
+ private:
+  std::mutex mutex_;
+  std::exception_ptr first_;
+  std::atomic<bool> failed_{false};
+};
+
+void runLidarJob(LidarWorker& worker, LidarJob& job) {
+  if (auto* scan = std::get_if<ScanPtr>(&job)) return worker.addScan(**scan);
+  auto& frame = std::get<LidarFrameJob>(job);
+  if (!frame.exchange) {
+    worker.addFrame(frame.t, {});
+    return;
+  }
+  try {
+    frame.exchange->fusion.set_value(worker.addFrame(frame.t, frame.exchange->segments_future.get()));
+  } catch (...) {
+    failPromise(frame.exchange->fusion, std::current_exception());
+    throw;
+  }
+}
+
+void runVisualJob(VisualWorker& worker, VisualJob& job) {
+  if (auto* scan = std::get_if<ScanPtr>(&job)) return worker.addScan(*scan);
+  auto& frame = std::get<VisualFrameJob>(job);
+  try {
+    std::vector<fusion::ImageSegment> segments = worker.track(frame.image);
+    if (!frame.exchange) return;
+    frame.exchange->segments.set_value(std::move(segments));
+    worker.applyFusion(frame.exchange->fusion_future.get());
+  } catch (...) {
+    if (frame.exchange) failPromise(frame.exchange->segments, std::current_exception());
+    throw;
+  }
+}
+
+// After a failure the jobs left are not run, but their partners are told, so
+// that no thread waits for an answer that will not come.
+void abandon(LidarJob& job, std::exception_ptr error) {
+  if (auto* frame = std::get_if<LidarFrameJob>(&job); frame && frame->exchange)
+    failPromise(frame->exchange->fusion, error);
+}
+void abandon(VisualJob& job, std::exception_ptr error) {
+  if (auto* frame = std::get_if<VisualFrameJob>(&job); frame && frame->exchange)
+    failPromise(frame->exchange->segments, error);
+}
+
+template <typename Job, typename Run>
+void workerLoop(BoundedQueue<Job>& queue, Failure& failure, Run run, const std::function<void()>& close_all) {
+  while (auto job = queue.pop()) {
+    if (failure.failed()) {
+      abandon(*job, failure.first());
+      continue;
+    }
+    try {
+      run(*job);
+    } catch (...) {
+      failure.record(std::current_exception());
+      close_all();
+      abandon(*job, failure.first());
+    }
+  }
+}
+
+PipelineRecords collect(Workers& workers, PipelineRecords records) {
+  if (workers.lidar) {
+    records.lidar = workers.lidar->frames();
+    records.scans = workers.lidar->scans();
+    records.T_odom_lidar_scans = workers.lidar->scanTrajectory();
+    records.lidar_map = workers.lidar->map().points();
+  }
+  if (workers.visual) {
+    records.visual = workers.visual->frames();
+    const visual::VisualMap& map = workers.visual->slam().map();
+    for (const auto& [id, line] : map.lines())
+      if (!line.bad) records.visual_lines.push_back({line.start_world, line.end_world, line.from_fusion});
+    records.visual_map_id = workers.visual->slam().mapId();
+  }
+  return records;
+}
+
+void noteTime(PipelineRecords& records, std::size_t items_before, double t) {
+  if (items_before == 0) records.first_time = t;
+  records.last_time = t;
+}
+
+}  // namespace
+
+PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, const ProgressCallback& progress) {
+  Workers workers = makeWorkers(source, config);
+  // Bit-identical runs need TBB's loops on one thread too.
+  std::optional<tbb::global_control> one_thread;
+  if (config.deterministic) one_thread.emplace(tbb::global_control::max_allowed_parallelism, 1);
+
+  BoundedQueue<LidarJob> lidar_queue(8);
+  BoundedQueue<VisualJob> visual_queue(4);
+  Failure failure;
+  const auto close_all = [&] {
+    lidar_queue.close();
+    visual_queue.close();
+  };
+  // Deterministic: the same jobs, run in reading order on this thread.
+  const bool threaded = !config.deterministic;
+  std::thread lidar_thread, visual_thread;
+  if (threaded && workers.lidar)
+    lidar_thread = std::thread([&] {
+      workerLoop(lidar_queue, failure, [&](LidarJob& job) { runLidarJob(*workers.lidar, job); }, close_all);
+      if (!failure.failed()) {
+        try {
+          workers.lidar->finish();
+        } catch (...) {
+          failure.record(std::current_exception());
+        }
+      }
+    });
+  if (threaded && workers.visual)
+    visual_thread = std::thread([&] {
+      workerLoop(visual_queue, failure, [&](VisualJob& job) { runVisualJob(*workers.visual, job); }, close_all);
+    });
+
+  const auto toLidar = [&](LidarJob job) {
+    if (threaded) return lidar_queue.push(std::move(job));
+    runLidarJob(*workers.lidar, job);
+    return true;
+  };
+  const auto toVisual = [&](VisualJob job) {
+    if (threaded) return visual_queue.push(std::move(job));
+    runVisualJob(*workers.visual, job);
+    return true;
+  };
+
+  PipelineRecords records;
+  std::size_t scans = 0;
+  std::exception_ptr reading_error;
+  try {
+    while (auto data = source.next()) {
+      if (failure.failed()) break;
+      bool ok = true;
+      if (auto* scan = std::get_if<LidarScan>(&*data)) {
+        noteTime(records, records.images + scans, scan->timestamp);
+        ++scans;
+        const ScanPtr shared = std::make_shared<const LidarScan>(std::move(*scan));
+        if (workers.visual) ok = toVisual(shared);
+        if (ok && workers.lidar) ok = toLidar(shared);
+        if (progress) progress(shared->timestamp, records.images, scans);
+      } else {
+        auto& image = std::get<ImageFrame>(*data);
+        noteTime(records, records.images + scans, image.timestamp);
+        ++records.images;
+        const double t = image.timestamp;
+        // The fusion framework needs both subsystems of this frame.
+        const ExchangePtr exchange =
+            workers.lidar && workers.visual && !config.deterministic ? std::make_shared<FrameExchange>() : nullptr;
+        if (workers.visual && !threaded) {
+          std::vector<fusion::ImageSegment> segments = workers.visual->track(image);
+          if (workers.lidar) workers.visual->applyFusion(workers.lidar->addFrame(t, segments));
+        } else {
+          if (workers.visual) ok = toVisual(VisualFrameJob{std::move(image), exchange});
+          if (ok && workers.lidar) ok = toLidar(LidarFrameJob{t, exchange});
+          // Refused after a failure: the visual thread may already wait for this fusion answer.
+          if (!ok && exchange) failPromise(exchange->fusion, failure.first());
+        }
+        if (progress) progress(t, records.images, scans);
+      }
+      if (!ok) break;
+    }
+    if (!threaded && workers.lidar) workers.lidar->finish();
+  } catch (...) {
+    reading_error = std::current_exception();
+    failure.record(reading_error);
+  }
+  close_all();
+  if (lidar_thread.joinable()) lidar_thread.join();
+  if (visual_thread.joinable()) visual_thread.join();
+  if (reading_error) std::rethrow_exception(reading_error);
+  if (failure.first()) std::rethrow_exception(failure.first());
+  records.scans_read = scans;
+  return collect(workers, std::move(records));
+}
+
+}  // namespace lvslam::system

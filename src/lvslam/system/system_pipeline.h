@@ -1,0 +1,45 @@
+#pragma once
+// Runs the subsystems of a mode over a recording (paper, Fig. 1): in fused
+// mode the LiDAR thread (LiDAR subsystem + fusion framework) and the visual
+// thread exchange, per camera frame, the image's line segments and the
+// fusion lines; bounded queues carry the sensor data to both. The order of
+// every computation is fixed by the data, so the threaded run gives the same
+// numbers as the one-thread deterministic run.
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "lvslam/io/ply_writer.h"
+#include "lvslam/io/sensor_source.h"
+#include "lvslam/system/frame_records.h"
+#include "lvslam/system/system_config.h"
+
+namespace lvslam::system {
+
+// A 3D line of the visual map, in its map frame.
+struct MapLine {
+  Eigen::Vector3d start = Eigen::Vector3d::Zero(), end = Eigen::Vector3d::Zero();
+  bool from_fusion = false;
+};
+
+struct PipelineRecords {
+  std::vector<VisualFrameRecord> visual;  // one per camera frame (visual and fused modes)
+  std::vector<LidarFrameRecord> lidar;    // one per camera frame (lidar and fused modes)
+  std::vector<ScanRecord> scans;
+  Trajectory T_odom_lidar_scans;          // at scan times
+  std::vector<PlyPoint> lidar_map;        // odometry world frame
+  std::vector<MapLine> visual_lines;      // the last visual map's lines
+  int visual_map_id = -1;                 // ... and its id
+  std::size_t images = 0, scans_read = 0;  // as read from the source
+  double first_time = 0.0, last_time = 0.0;  // of the sensor data
+};
+
+// Called by the reading thread after each item handed on (time of the item,
+// images and scans so far).
+using ProgressCallback = std::function<void(double t, std::size_t images, std::size_t scans)>;
+
+// Throws lvslam::Error on bad input (from the source or either subsystem),
+// after both threads have stopped.
+PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, const ProgressCallback& progress);
+
+}  // namespace lvslam::system

@@ -1,0 +1,61 @@
+#include "lvslam/system/visual_worker.h"
+
+#include "lvslam/core/error.h"
+#include "lvslam/fusion/lidar_depth_hints.h"
+#include "lvslam/system/stopwatch.h"
+
+namespace lvslam::system {
+
+namespace {
+
+const PinholeCamera& requireCamera(const Calibration& calibration) {
+  if (!calibration.camera) throw Error("visual subsystem", "the recording has no camera calibration");
+  return *calibration.camera;
+}
+
+}  // namespace
+
+VisualWorker::VisualWorker(const SystemConfig& config, const Calibration& calibration, bool has_lidar)
+    : calibration_(calibration),
+      use_fusion_lines_(config.fusion_lines_in_tracking),
+      hint_max_dt_(config.depth_hint_max_dt),
+      has_lidar_(has_lidar),
+      slam_(config.visual, requireCamera(calibration)) {}
+
+void VisualWorker::addScan(std::shared_ptr<const LidarScan> scan) {
+  recent_scans_.push_back(std::move(scan));
+  if (recent_scans_.size() > 2) recent_scans_.erase(recent_scans_.begin());
+}
+
+std::vector<fusion::ImageSegment> VisualWorker::track(const ImageFrame& image) {
+  VisualFrameRecord record;
+  record.t = image.timestamp;
+  // With a LiDAR every frame is told its hints, none before the first scan,
+  // so that the visual subsystem never starts a map without metric depth.
+  if (slam_.needsDepthHints() && has_lidar_) {
+    const Stopwatch watch;
+    slam_.setDepthHints(fusion::lidarDepthHints(recent_scans_, image.timestamp, calibration_, hint_max_dt_));
+    record.hints_ms = watch.ms();
+  }
+  const Stopwatch watch;
+  record.result = slam_.track(image);
+  record.track_ms = watch.ms();
+  frames_.push_back(std::move(record));
+  std::vector<fusion::ImageSegment> segments;
+  for (const visual::ImageLineSegment& s : slam_.lineSegments()) segments.push_back({s.start, s.end});
+  return segments;
+}
+
+void VisualWorker::applyFusion(const fusion::FusionResult& fusion) {
+  if (!use_fusion_lines_ || frames_.empty() || !frames_.back().result.pose_valid) return;
+  const Stopwatch watch;
+  int added = 0;
+  for (const fusion::FusionLine& line : fusion.lines) {
+    const int id = slam_.addFusionLine(static_cast<int>(line.segment_index), line.A, line.B, line.direction);
+    added += id >= 0 ? 1 : 0;
+  }
+  frames_.back().fusion_lines_added = added;
+  frames_.back().fusion_apply_ms = watch.ms();
+}
+
+}  // namespace lvslam::system

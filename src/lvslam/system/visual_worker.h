@@ -1,0 +1,43 @@
+#pragma once
+// The visual side of the dual system, run by one thread: the visual
+// subsystem, fed with LiDAR depth hints for a metric start (from the latest
+// raw scans) and, in fused mode, with the fusion lines of each frame.
+#include <memory>
+#include <vector>
+
+#include "lvslam/core/calibration.h"
+#include "lvslam/core/lidar_scan.h"
+#include "lvslam/fusion/fusion_framework.h"
+#include "lvslam/system/frame_records.h"
+#include "lvslam/system/system_config.h"
+#include "lvslam/visual/tracking/visual_slam.h"
+
+namespace lvslam::system {
+
+class VisualWorker {
+ public:
+  // Throws lvslam::Error when the calibration has no camera. With a LiDAR
+  // (has_lidar) the scans given through addScan() provide depth hints.
+  VisualWorker(const SystemConfig& config, const Calibration& calibration, bool has_lidar);
+
+  // Raw scans, kept (the last two) for the depth hints of the next images.
+  void addScan(std::shared_ptr<const LidarScan> scan);
+  // Tracks the next camera frame; returns its line segments for the fusion framework.
+  std::vector<fusion::ImageSegment> track(const ImageFrame& image);
+  // The fusion framework's answer for the frame just tracked.
+  void applyFusion(const fusion::FusionResult& fusion);
+
+  const std::vector<VisualFrameRecord>& frames() const { return frames_; }
+  const visual::VisualSlam& slam() const { return slam_; }
+
+ private:
+  Calibration calibration_;
+  bool use_fusion_lines_;
+  double hint_max_dt_;
+  bool has_lidar_;
+  visual::VisualSlam slam_;
+  std::vector<std::shared_ptr<const LidarScan>> recent_scans_;
+  std::vector<VisualFrameRecord> frames_;
+};
+
+}  // namespace lvslam::system

@@ -1,0 +1,328 @@
+#include "lvslam/system/output_assembly.h"
+
+#include <gtest/gtest.h>
+
+#include "lvslam/core/se3.h"
+
+namespace lvslam::system {
+namespace {
+
+constexpr double kFrameDt = 0.1;
+
+// The true camera: forward at 0.5 m/s while turning and climbing a little.
+Eigen::Isometry3d trueCamera(double t) {
+  Vector6d xi;
+  xi << 0.05, 0.02, 0.5, 0.03, 0.25, -0.04;
+  return makePose(expSO3(Eigen::Vector3d(0.2, -0.1, 0.4)), Eigen::Vector3d(2, -1, 0.5)) * expSE3(t * xi);
+}
+
+const Eigen::Isometry3d kTCameraLidar =
+    makePose(expSO3(Eigen::Vector3d(-1.2, 1.2, -1.2)), Eigen::Vector3d(0.05, -0.1, -0.08));
+const Eigen::Isometry3d kTOdomWorld = expSE3((Vector6d() << 3, -2, 1, 0.1, -0.2, 0.7).finished());
+
+Eigen::Isometry3d exactOdomLidar(double t) { return kTOdomWorld * trueCamera(t) * kTCameraLidar; }
+
+double frameTime(std::size_t j) { return 10.0 + kFrameDt * static_cast<double>(j); }
+
+visual::VisualFrameResult healthyResult(double t, int map_id, const Eigen::Isometry3d& T_map_camera) {
+  visual::VisualFrameResult r;
+  r.timestamp = t;
+  r.state = visual::TrackingState::kTracking;
+  r.pose_valid = true;
+  r.T_world_camera = T_map_camera;
+  r.map_id = map_id;
+  r.metric = true;
+  r.tracked_points = 150;
+  r.tracked_lines = 20;
+  r.inlier_ratio = 0.9;
+  r.brightness = 120.0;
+  r.contrast = 40.0;
+  return r;
+}
+
+VisualFrameRecord visualRecord(double t, const visual::VisualFrameResult& result) {
+  VisualFrameRecord v;
+  v.t = t;
+  v.result = result;
+  return v;
+}
+
+LidarFrameRecord lidarRecord(double t, std::optional<Eigen::Isometry3d> T_odom_lidar) {
+  LidarFrameRecord l;
+  l.t = t;
+  l.T_odom_lidar = T_odom_lidar;
+  return l;
+}
+
+double translationDiff(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return (a.inverse() * b).translation().norm();
+}
+double rotationDiff(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) { return rotationAngle(a.inverse() * b); }
+
+SystemConfig configFor(RunMode mode) {
+  SystemConfig c;
+  c.mode = mode;
+  return c;
+}
+
+// ---- lidar mode ----
+
+TEST(AssembleOutput, LidarModeGivesOdometryTimesExtrinsicsExactly) {
+  PipelineRecords records;
+  for (std::size_t j = 0; j < 12; ++j) {
+    const double t = frameTime(j);
+    records.lidar.push_back(lidarRecord(t, j == 0 ? std::nullopt : std::optional(exactOdomLidar(t))));
+  }
+  const SystemOutput out = assembleOutput(records, configFor(RunMode::kLidar), kTCameraLidar);
+  ASSERT_EQ(out.frames.size(), 12u);
+  EXPECT_TRUE(out.trajectory_is_camera);
+  EXPECT_TRUE(out.switches.empty());
+  EXPECT_FALSE(out.frames[0].T_world_camera.has_value());  // no LiDAR pose yet
+  ASSERT_EQ(out.trajectory.size(), 11u);
+  const Eigen::Isometry3d T_lidar_camera = kTCameraLidar.inverse();
+  for (std::size_t j = 1; j < 12; ++j) {
+    const Eigen::Isometry3d expected = *records.lidar[j].T_odom_lidar * T_lidar_camera;
+    ASSERT_TRUE(out.frames[j].T_world_camera.has_value());
+    EXPECT_EQ(out.frames[j].source, OutputSource::kLidar);
+    EXPECT_TRUE(out.frames[j].T_world_camera->isApprox(expected, 1e-12)) << j;
+    EXPECT_EQ(out.trajectory[j - 1].t, frameTime(j));
+    EXPECT_TRUE(out.trajectory[j - 1].T_world_frame.isApprox(expected, 1e-12)) << j;
+    // ... which is the true camera in the odometry's frame.
+    EXPECT_LT(translationDiff(out.trajectory[j - 1].T_world_frame, kTOdomWorld * trueCamera(frameTime(j))), 1e-9);
+  }
+}
+
+TEST(AssembleOutput, LidarModeWithoutCameraOutputsTheScanTrajectory) {
+  PipelineRecords records;
+  for (int k = 0; k < 5; ++k) records.T_odom_lidar_scans.push_back({0.1 * k, exactOdomLidar(0.1 * k)});
+  const SystemOutput out = assembleOutput(records, configFor(RunMode::kLidar), kTCameraLidar);
+  EXPECT_FALSE(out.trajectory_is_camera);
+  ASSERT_EQ(out.trajectory.size(), 5u);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(out.trajectory[k].t, 0.1 * k);
+    EXPECT_TRUE(out.trajectory[k].T_world_frame.isApprox(exactOdomLidar(0.1 * k), 1e-12));
+  }
+}
+
+TEST(AssembleOutput, FusionLinesAreMovedIntoTheWorldWithTheFramePose) {
+  PipelineRecords records;
+  records.lidar.push_back(lidarRecord(frameTime(0), exactOdomLidar(frameTime(0))));
+  records.lidar[0].fusion_lines.push_back({Eigen::Vector3d(0.5, -0.2, 3.0), Eigen::Vector3d(0.5, 0.8, 3.1)});
+  const SystemOutput out = assembleOutput(records, configFor(RunMode::kLidar), kTCameraLidar);
+  ASSERT_EQ(out.lines_world.size(), 1u);
+  const Eigen::Isometry3d T = *out.frames[0].T_world_camera;
+  EXPECT_LT((out.lines_world[0].a - T * Eigen::Vector3d(0.5, -0.2, 3.0)).norm(), 1e-12);
+  EXPECT_LT((out.lines_world[0].b - T * Eigen::Vector3d(0.5, 0.8, 3.1)).norm(), 1e-12);
+  EXPECT_EQ(out.lines_world[0].r, 255);  // fusion lines are red
+  EXPECT_EQ(out.lines_world[0].g, 0);
+}
+
+// ---- visual mode ----
+
+// Map 0 starts at frame 5 (first view frame 0), tracks to frame 14, is lost
+// over 15..19; map 1 starts at frame 20 with its first view at frame 17.
+PipelineRecords twoVisualMaps(const Eigen::Isometry3d& T_map0_world, const Eigen::Isometry3d& T_map1_world,
+                              bool second_metric) {
+  PipelineRecords records;
+  for (std::size_t j = 0; j < 30; ++j) {
+    const double t = frameTime(j);
+    visual::VisualFrameResult r;
+    r.timestamp = t;
+    if (j >= 5 && j < 15) {
+      r = healthyResult(t, 0, T_map0_world * trueCamera(t));
+      if (j == 5) r.initial_reference = StampedPose{frameTime(0), T_map0_world * trueCamera(frameTime(0))};
+    } else if (j >= 20) {
+      r = healthyResult(t, 1, T_map1_world * trueCamera(t));
+      r.metric = second_metric;
+      if (j == 20) r.initial_reference = StampedPose{frameTime(17), T_map1_world * trueCamera(frameTime(17))};
+    } else {
+      r.state = j < 5 ? visual::TrackingState::kInitializing : visual::TrackingState::kLost;
+      r.map_id = j < 5 ? 0 : 1;
+    }
+    records.visual.push_back(visualRecord(t, r));
+  }
+  return records;
+}
+
+TEST(AssembleOutput, VisualModeAnchorsTheSecondMapAtTheLastPoseOfTheFirst) {
+  const Eigen::Isometry3d map0 = Eigen::Isometry3d::Identity();
+  const Eigen::Isometry3d map1 = expSE3((Vector6d() << -5, 4, 2, 0.6, -0.3, 1.2).finished());
+  const SystemOutput out = assembleOutput(twoVisualMaps(map0, map1, true), configFor(RunMode::kVisual), kTCameraLidar);
+  ASSERT_EQ(out.frames.size(), 30u);
+  EXPECT_TRUE(out.metric);
+  // First view + 10 tracked of map 0, first view + 10 tracked of map 1.
+  ASSERT_EQ(out.trajectory.size(), 22u);
+  // Map 0 is the world.
+  for (std::size_t j : {0, 5, 9, 14}) {
+    ASSERT_TRUE(out.frames[j].T_world_camera) << j;
+    EXPECT_TRUE(out.frames[j].T_world_camera->isApprox(trueCamera(frameTime(j)), 1e-12)) << j;
+  }
+  for (std::size_t j : {1, 4, 15, 16, 18, 19}) EXPECT_FALSE(out.frames[j].T_world_camera) << j;
+  EXPECT_NE(out.frames[16].problem.find("lost"), std::string::npos) << out.frames[16].problem;
+  // Map 1's first view (frame 17) sits where map 0 ended (frame 14): the
+  // camera is taken to have stood still while lost.
+  const Eigen::Isometry3d last_of_map0 = *out.frames[14].T_world_camera;
+  ASSERT_TRUE(out.frames[17].T_world_camera);
+  EXPECT_TRUE(out.frames[17].T_world_camera->isApprox(last_of_map0, 1e-12));
+  // From there on, map 1's relative motion, whatever its own frame.
+  for (std::size_t j = 20; j < 30; ++j) {
+    const Eigen::Isometry3d expected = last_of_map0 * trueCamera(frameTime(17)).inverse() * trueCamera(frameTime(j));
+    ASSERT_TRUE(out.frames[j].T_world_camera) << j;
+    EXPECT_LT(translationDiff(*out.frames[j].T_world_camera, expected), 1e-9) << j;
+    EXPECT_LT(rotationDiff(*out.frames[j].T_world_camera, expected), 1e-9) << j;
+  }
+  // The trajectory is in time order.
+  for (std::size_t i = 1; i < out.trajectory.size(); ++i) EXPECT_LT(out.trajectory[i - 1].t, out.trajectory[i].t);
+}
+
+TEST(AssembleOutput, VisualModeIsNotMetricWhenAnyMapIsNot) {
+  const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
+  EXPECT_FALSE(assembleOutput(twoVisualMaps(I, I, false), configFor(RunMode::kVisual), kTCameraLidar).metric);
+}
+
+// ---- fused mode ----
+
+// The visual estimate drifts 1 mm per frame along the camera x axis: small
+// enough to agree with the LiDAR, large enough to tell whose motion the
+// output follows.
+Eigen::Isometry3d driftingVisual(const Eigen::Isometry3d& T_map_world, std::size_t j) {
+  const Eigen::Isometry3d drift = makePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.001 * j, 0.0, 0.0));
+  return T_map_world * trueCamera(frameTime(j)) * drift;
+}
+
+struct FusedScenario {
+  PipelineRecords records;
+  std::size_t blackout_begin = 20, blackout_end = 30;  // frames [begin, end) are black
+};
+
+// Healthy vision in map 0, a blackout, then a new map 1; the LiDAR is exact throughout.
+FusedScenario blackoutScenario(std::size_t frames) {
+  FusedScenario s;
+  const Eigen::Isometry3d map0 = expSE3((Vector6d() << 1, 2, 3, 0.1, 0.2, 0.3).finished());
+  const Eigen::Isometry3d map1 = expSE3((Vector6d() << -4, 0, 1, 0.5, -0.2, 0.0).finished());
+  for (std::size_t j = 0; j < frames; ++j) {
+    const double t = frameTime(j);
+    visual::VisualFrameResult r;
+    if (j < s.blackout_begin) {
+      r = healthyResult(t, 0, driftingVisual(map0, j));
+    } else if (j < s.blackout_end) {
+      r.state = visual::TrackingState::kLost;
+      r.map_id = 0;
+      r.brightness = 0.0;  // black image
+      r.contrast = 0.0;
+    } else {
+      r = healthyResult(t, 1, driftingVisual(map1, j));
+    }
+    s.records.visual.push_back(visualRecord(t, r));
+    s.records.lidar.push_back(lidarRecord(t, exactOdomLidar(t)));
+  }
+  return s;
+}
+
+// Whose motion each output step follows: the visual map's while vision stays
+// in use in the same map, the LiDAR's otherwise (including the frame of a
+// switch, where the visual map is re-anchored, so there is no jump).
+void expectStepsFollowTheSource(const PipelineRecords& records, const SystemOutput& out) {
+  const Eigen::Isometry3d T_lidar_camera = kTCameraLidar.inverse();
+  for (std::size_t j = 1; j < out.frames.size(); ++j) {
+    ASSERT_TRUE(out.frames[j - 1].T_world_camera && out.frames[j].T_world_camera) << j;
+    const Eigen::Isometry3d step = out.frames[j - 1].T_world_camera->inverse() * *out.frames[j].T_world_camera;
+    const auto& v0 = records.visual[j - 1].result;
+    const auto& v1 = records.visual[j].result;
+    const bool visual_step = out.frames[j - 1].source == OutputSource::kVisual &&
+                             out.frames[j].source == OutputSource::kVisual && v0.map_id == v1.map_id;
+    const Eigen::Isometry3d expected =
+        visual_step ? v0.T_world_camera.inverse() * v1.T_world_camera
+                    : T_lidar_camera.inverse() * records.lidar[j - 1].T_odom_lidar->inverse() *
+                          *records.lidar[j].T_odom_lidar * T_lidar_camera;
+    EXPECT_LT(translationDiff(step, expected), 1e-9) << "frame " << j << (visual_step ? " (visual)" : " (lidar)");
+    EXPECT_LT(rotationDiff(step, expected), 1e-9) << j;
+    // No jump: every step is one frame's true motion, up to the drift (1 mm
+    // per frame, plus the turn of the accumulated drift: < 3 mm here).
+    const Eigen::Isometry3d true_step = trueCamera(frameTime(j - 1)).inverse() * trueCamera(frameTime(j));
+    EXPECT_LT(translationDiff(step, true_step), 3e-3) << j;
+  }
+}
+
+TEST(AssembleOutput, FusedUsesVisionOnlyAfterFramesToRecoverHealthyAgreeingFrames) {
+  FusedScenario s = blackoutScenario(20);
+  SystemConfig config = configFor(RunMode::kFused);
+  config.detection.frames_to_recover = 6;
+  const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
+  ASSERT_EQ(out.frames.size(), 20u);
+  // Frame 0 has no motion to compare; frames 0..5 make the streak of six.
+  for (std::size_t j = 0; j < 5; ++j) EXPECT_EQ(out.frames[j].source, OutputSource::kLidar) << j;
+  for (std::size_t j = 5; j < 20; ++j) EXPECT_EQ(out.frames[j].source, OutputSource::kVisual) << j;
+  ASSERT_EQ(out.switches.size(), 1u);
+  EXPECT_EQ(out.switches[0].t, frameTime(5));
+  EXPECT_EQ(out.switches[0].to, OutputSource::kVisual);
+  // The LiDAR starts the output: the odometry frame, carried to the camera.
+  EXPECT_TRUE(out.frames[0].T_world_camera->isApprox(exactOdomLidar(frameTime(0)) * kTCameraLidar.inverse(), 1e-12));
+  expectStepsFollowTheSource(s.records, out);
+}
+
+TEST(AssembleOutput, FusedBlackoutSwitchesToLidarAtOnceAndBackWithoutJumps) {
+  FusedScenario s = blackoutScenario(50);
+  SystemConfig config = configFor(RunMode::kFused);
+  config.detection.frames_to_recover = 5;
+  const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
+  ASSERT_EQ(out.frames.size(), 50u);
+  ASSERT_EQ(out.switches.size(), 3u);
+  EXPECT_EQ(out.switches[0].to, OutputSource::kVisual);
+  EXPECT_EQ(out.switches[0].t, frameTime(4));
+  // The first black frame hands over to the LiDAR, saying why.
+  EXPECT_EQ(out.switches[1].to, OutputSource::kLidar);
+  EXPECT_EQ(out.switches[1].t, frameTime(s.blackout_begin));
+  EXPECT_NE(out.switches[1].reason.find("dark"), std::string::npos) << out.switches[1].reason;
+  EXPECT_NE(out.frames[s.blackout_begin + 3].problem.find("dark"), std::string::npos);
+  // Back on the new map after five healthy frames with known motion: the
+  // first new frame has none (the previous one had no pose), so 30..34.
+  EXPECT_EQ(out.switches[2].to, OutputSource::kVisual);
+  EXPECT_EQ(out.switches[2].t, frameTime(s.blackout_end + 4));
+  for (std::size_t j = s.blackout_begin; j < s.blackout_end + 4; ++j)
+    EXPECT_EQ(out.frames[j].source, OutputSource::kLidar) << j;
+  expectStepsFollowTheSource(s.records, out);
+}
+
+TEST(AssembleOutput, FusedNeverUsesANonMetricVisualMap) {
+  FusedScenario s = blackoutScenario(40);
+  for (VisualFrameRecord& v : s.records.visual) v.result.metric = false;
+  SystemConfig config = configFor(RunMode::kFused);
+  config.detection.frames_to_recover = 2;
+  const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
+  EXPECT_TRUE(out.switches.empty());
+  for (std::size_t j = 0; j < out.frames.size(); ++j) EXPECT_EQ(out.frames[j].source, OutputSource::kLidar) << j;
+  EXPECT_NE(out.frames[10].problem.find("metric"), std::string::npos) << out.frames[10].problem;
+  // All LiDAR: the true camera in the odometry frame.
+  for (std::size_t j = 0; j < out.frames.size(); ++j)
+    EXPECT_LT(translationDiff(*out.frames[j].T_world_camera, kTOdomWorld * trueCamera(frameTime(j))), 1e-9) << j;
+}
+
+TEST(AssembleOutput, FusedDisagreeingVisionIsNotUsed) {
+  FusedScenario s = blackoutScenario(20);
+  // 5 cm per frame of extra visual motion: over max_disagreement_m (2 cm).
+  for (std::size_t j = 0; j < 20; ++j)
+    s.records.visual[j].result.T_world_camera =
+        s.records.visual[j].result.T_world_camera *
+        makePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.05 * j, 0.0));
+  SystemConfig config = configFor(RunMode::kFused);
+  config.detection.frames_to_recover = 2;
+  const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
+  EXPECT_TRUE(out.switches.empty());
+  EXPECT_NE(out.frames[5].problem.find("disagree"), std::string::npos) << out.frames[5].problem;
+}
+
+TEST(AssembleOutput, FusedSkipsFramesBeforeTheFirstLidarPose) {
+  FusedScenario s = blackoutScenario(10);
+  s.records.lidar[0].T_odom_lidar.reset();
+  s.records.lidar[1].T_odom_lidar.reset();
+  const SystemOutput out = assembleOutput(s.records, configFor(RunMode::kFused), kTCameraLidar);
+  EXPECT_FALSE(out.frames[0].T_world_camera);
+  EXPECT_FALSE(out.frames[1].T_world_camera);
+  ASSERT_TRUE(out.frames[2].T_world_camera);
+  EXPECT_EQ(out.trajectory.size(), 8u);
+  EXPECT_TRUE(out.frames[2].T_world_camera->isApprox(exactOdomLidar(frameTime(2)) * kTCameraLidar.inverse(), 1e-12));
+}
+
+}  // namespace
+}  // namespace lvslam::system

@@ -1,0 +1,51 @@
+#include "system/sim_cache.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <stdexcept>
+
+#include "lvslam/sim/simulate_sequence.h"
+
+namespace lvslam::testing {
+
+namespace {
+
+// An exclusive flock on a file, released when destroyed (or if the process dies).
+class FileLock {
+ public:
+  explicit FileLock(const std::string& path) : fd_(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+    if (fd_ < 0) throw std::runtime_error("cannot open the lock file " + path);
+    while (::flock(fd_, LOCK_EX) != 0)
+      if (errno != EINTR) throw std::runtime_error("cannot lock " + path);
+  }
+  ~FileLock() { ::close(fd_); }
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+}  // namespace
+
+std::string cachedSimulation(const std::string& name, const sim::SimOptions& options) {
+  namespace fs = std::filesystem;
+  const fs::path cache(LVSLAM_TEST_CACHE_DIR);
+  fs::create_directories(cache);
+  const fs::path done = cache / name;
+  const FileLock lock((cache / (name + ".lock")).string());
+  if (fs::exists(done / "sequence.yaml")) return done.string();
+  // Left over by a run that died half-way: start again.
+  const fs::path partial = cache / (name + ".partial");
+  fs::remove_all(partial);
+  fs::remove_all(done);
+  sim::simulateSequence(options, partial.string());
+  fs::rename(partial, done);
+  return done.string();
+}
+
+}  // namespace lvslam::testing

@@ -1,0 +1,130 @@
+#include "lvslam/system/system_config.h"
+
+#include <gtest/gtest.h>
+
+#include "lvslam/core/error.h"
+#include "support/temp_dir.h"
+
+namespace lvslam::system {
+namespace {
+
+using lvslam::testing::errorMessageOf;
+
+SystemConfig load(const std::string& text) { return loadSystemConfig(YamlConfig::loadString(text, "test.yaml")); }
+
+TEST(SystemConfig, EmptyFileKeepsEveryDefault) {
+  const SystemConfig c = load("{}");
+  const SystemConfig d;
+  EXPECT_EQ(c.mode, RunMode::kFused);
+  EXPECT_FALSE(c.deterministic);
+  EXPECT_EQ(c.detection.frames_to_recover, d.detection.frames_to_recover);
+  EXPECT_EQ(c.lidar.preprocess.voxel_size, d.lidar.preprocess.voxel_size);
+  EXPECT_EQ(c.fusion.arc_step_deg, d.fusion.arc_step_deg);
+  EXPECT_EQ(c.map_voxel, d.map_voxel);
+}
+
+TEST(SystemConfig, ReadsEverySection) {
+  const SystemConfig c = load(
+      "lidar:\n"
+      "  preprocess:\n"
+      "    voxel_size: 0.4\n"
+      "visual:\n"
+      "  orb:\n"
+      "    max_features: 543\n"
+      "fusion:\n"
+      "  arc_step_deg: 0.35\n"
+      "detection:\n"
+      "  min_tracked_points: 17\n"
+      "  min_tracked_lines: 3\n"
+      "  min_inlier_ratio: 0.25\n"
+      "  min_brightness: 12\n"
+      "  max_brightness: 230\n"
+      "  min_contrast: 4.5\n"
+      "  frames_to_recover: 6\n"
+      "  max_disagreement_m: 0.05\n"
+      "  max_disagreement_deg: 1.5\n"
+      "system:\n"
+      "  fusion_lines_in_tracking: false\n"
+      "  lidar_direction_refinement: false\n"
+      "  depth_hint_max_dt: 0.04\n"
+      "  map_voxel: 0.3\n");
+  EXPECT_DOUBLE_EQ(c.lidar.preprocess.voxel_size, 0.4);
+  EXPECT_EQ(c.visual.visual.features.orb.max_features, 543);
+  EXPECT_DOUBLE_EQ(c.fusion.arc_step_deg, 0.35);
+  EXPECT_EQ(c.detection.min_tracked_points, 17);
+  EXPECT_EQ(c.detection.min_tracked_lines, 3);
+  EXPECT_DOUBLE_EQ(c.detection.min_inlier_ratio, 0.25);
+  EXPECT_DOUBLE_EQ(c.detection.min_brightness, 12.0);
+  EXPECT_DOUBLE_EQ(c.detection.max_brightness, 230.0);
+  EXPECT_DOUBLE_EQ(c.detection.min_contrast, 4.5);
+  EXPECT_EQ(c.detection.frames_to_recover, 6);
+  EXPECT_DOUBLE_EQ(c.detection.max_disagreement_m, 0.05);
+  EXPECT_DOUBLE_EQ(c.detection.max_disagreement_deg, 1.5);
+  EXPECT_FALSE(c.fusion_lines_in_tracking);
+  EXPECT_FALSE(c.lidar_direction_refinement);
+  EXPECT_DOUBLE_EQ(c.depth_hint_max_dt, 0.04);
+  EXPECT_DOUBLE_EQ(c.map_voxel, 0.3);
+}
+
+TEST(SystemConfig, TheShippedSimConfigLoads) {
+  const std::string path = std::string(LVSLAM_SOURCE_DIR) + "/config/sim.yaml";
+  EXPECT_NO_THROW(loadSystemConfig(YamlConfig::loadFile(path)));
+}
+
+TEST(SystemConfig, UnknownDetectionKeyNamesFileAndKey) {
+  lvslam::testing::TempDir dir;
+  dir.write("bad.yaml", "detection:\n  frames_to_recovr: 3\n");
+  const std::string message = errorMessageOf([&] { loadSystemConfig(YamlConfig::loadFile(dir.file("bad.yaml"))); });
+  EXPECT_NE(message.find(dir.file("bad.yaml")), std::string::npos) << message;
+  EXPECT_NE(message.find("detection"), std::string::npos) << message;
+  EXPECT_NE(message.find("frames_to_recovr"), std::string::npos) << message;
+  EXPECT_THROW(loadSystemConfig(YamlConfig::loadFile(dir.file("bad.yaml"))), lvslam::Error);
+}
+
+TEST(SystemConfig, UnknownSystemKeyNamesFileAndKey) {
+  const std::string message = errorMessageOf([] { load("system:\n  map_voxels: 0.3\n"); });
+  EXPECT_NE(message.find("test.yaml"), std::string::npos) << message;
+  EXPECT_NE(message.find("system"), std::string::npos) << message;
+  EXPECT_NE(message.find("map_voxels"), std::string::npos) << message;
+  EXPECT_THROW(load("system:\n  map_voxels: 0.3\n"), lvslam::Error);
+}
+
+TEST(SystemConfig, InvalidValuesAreErrorsNamingTheKey) {
+  EXPECT_THROW(load("detection:\n  frames_to_recover: 0\n"), lvslam::Error);
+  EXPECT_THROW(load("detection:\n  min_inlier_ratio: 1.5\n"), lvslam::Error);
+  EXPECT_THROW(load("detection:\n  min_brightness: 200\n  max_brightness: 100\n"), lvslam::Error);
+  EXPECT_THROW(load("detection:\n  max_disagreement_m: 0\n"), lvslam::Error);
+  EXPECT_THROW(load("detection:\n  min_tracked_points: -1\n"), lvslam::Error);
+  const std::string voxel = errorMessageOf([] { load("system:\n  map_voxel: -0.2\n"); });
+  EXPECT_NE(voxel.find("system.map_voxel"), std::string::npos) << voxel;
+  const std::string dt = errorMessageOf([] { load("system:\n  depth_hint_max_dt: 0\n"); });
+  EXPECT_NE(dt.find("system.depth_hint_max_dt"), std::string::npos) << dt;
+  EXPECT_THROW(load("system:\n  map_voxel: .nan\n"), lvslam::Error);
+  EXPECT_THROW(load("system:\n  fusion_lines_in_tracking: maybe\n"), lvslam::Error);
+}
+
+TEST(SystemConfig, ErrorsOfTheSubsystemSectionsPropagate) {
+  EXPECT_THROW(load("lidar:\n  preprocess:\n    voxel_sise: 0.3\n"), lvslam::Error);
+  EXPECT_THROW(load("visual:\n  orb:\n    max_featurs: 10\n"), lvslam::Error);
+  EXPECT_THROW(load("fusion:\n  arc_stepdeg: 0.2\n"), lvslam::Error);
+}
+
+TEST(RunMode, ParsesTheThreeNamesAndRoundTrips) {
+  for (const RunMode mode : {RunMode::kLidar, RunMode::kVisual, RunMode::kFused})
+    EXPECT_EQ(parseRunMode(runModeName(mode), "--mode"), mode);
+  EXPECT_EQ(parseRunMode("lidar", "--mode"), RunMode::kLidar);
+}
+
+TEST(RunMode, UnknownNameIsAnErrorNamingWhere) {
+  try {
+    parseRunMode("Fused", "--mode");
+    FAIL() << "no error";
+  } catch (const lvslam::Error& e) {
+    EXPECT_EQ(e.where(), "--mode");
+    EXPECT_NE(e.why().find("Fused"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parseRunMode("", "--mode"), lvslam::Error);
+}
+
+}  // namespace
+}  // namespace lvslam::system

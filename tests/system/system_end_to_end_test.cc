@@ -1,0 +1,225 @@
+// The whole system on short simulated room sequences (config/sim.yaml), as
+// `lvslam run` does it: accuracy per mode against the exact ground truth,
+// the detection module across a camera blackout, and determinism.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "lvslam/core/se3.h"
+#include "lvslam/system/run_recording.h"
+#include "support/temp_dir.h"
+#include "system/sim_cache.h"
+
+namespace lvslam::system {
+namespace {
+
+// 8 s: the robot starts from rest and makes about a third of its loop.
+sim::SimOptions roomOptions() {
+  sim::SimOptions o;
+  o.scenario = "room";
+  o.duration = 8.0;
+  o.seed = 1;
+  return o;
+}
+const char* const kRoomName = "room-8s-seed1";
+
+// Vision is in use at 5 s (it agrees with the LiDAR from about 4 s on) and
+// has 3.5 s after the blackout to re-initialise and prove itself again.
+constexpr double kBlackoutBegin = 5.0, kBlackoutEnd = 6.5;
+sim::SimOptions blackoutOptions() {
+  sim::SimOptions o = roomOptions();
+  o.duration = 10.0;
+  o.camera_blackout = sim::TimeInterval{kBlackoutBegin, kBlackoutEnd};
+  return o;
+}
+const char* const kBlackoutName = "room-10s-seed1-blackout-5-6.5";
+
+struct SimRun {
+  RunResult result;
+  Trajectory ground_truth;
+};
+
+SimRun runOn(const std::string& name, const sim::SimOptions& options, RunMode mode, bool deterministic) {
+  const std::string dir = lvslam::testing::cachedSimulation(name, options);
+  SystemConfig config = loadSystemConfig(YamlConfig::loadFile(std::string(LVSLAM_SOURCE_DIR) + "/config/sim.yaml"));
+  config.mode = mode;
+  config.deterministic = deterministic;
+  RecordingRequest request;
+  request.sequence_dir = dir;
+  Recording recording = openRecording(request);
+  SimRun run{runRecording(recording, config), *recording.ground_truth};
+  return run;
+}
+
+void printFigures(const char* what, const RunResult& r) {
+  const auto& ate = r.accuracy->ate.stats;
+  std::printf("[ figures  ] %s: ATE rmse %.4f mean %.4f max %.4f m over %zu poses of %zu images, "
+              "%zu from vision, %zu switches, %.2f fusion lines per frame\n",
+              what, ate.rmse, ate.mean, ate.max, r.output.trajectory.size(), r.summary.images,
+              r.summary.visual_output, r.summary.switches, r.summary.fusion_lines_per_frame);
+}
+
+Eigen::Isometry3d groundTruthAt(const Trajectory& gt, double t) {
+  const auto after = std::lower_bound(gt.begin(), gt.end(), t, [](const StampedPose& p, double s) { return p.t < s; });
+  if (after == gt.begin()) return after->T_world_frame;
+  if (after == gt.end()) return gt.back().T_world_frame;
+  const auto before = after - 1;
+  return interpolateAtTime(t, before->t, before->T_world_frame, after->t, after->T_world_frame);
+}
+
+// How far each output step (consecutive poses) is from the true step, in m.
+std::vector<double> stepErrors(const Trajectory& est, const Trajectory& gt) {
+  std::vector<double> errors;
+  for (std::size_t k = 1; k < est.size(); ++k) {
+    const Eigen::Isometry3d step = est[k - 1].T_world_frame.inverse() * est[k].T_world_frame;
+    const Eigen::Isometry3d true_step = groundTruthAt(gt, est[k - 1].t).inverse() * groundTruthAt(gt, est[k].t);
+    errors.push_back((true_step.inverse() * step).translation().norm());
+  }
+  return errors;
+}
+
+std::string fileText(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// ---- accuracy per mode ----
+
+TEST(SystemEndToEnd, LidarModeMeetsTheLidarTarget) {
+  const SimRun run = runOn(kRoomName, roomOptions(), RunMode::kLidar, false);
+  const RunResult& r = run.result;
+  ASSERT_TRUE(r.accuracy);
+  printFigures("lidar", r);
+  EXPECT_EQ(r.accuracy->alignment, eval::Alignment::kSE3);
+  EXPECT_EQ(r.output.trajectory.size(), r.summary.images);  // a pose at every camera frame
+  EXPECT_EQ(r.summary.images, 120u);
+  // Issue #7: the LiDAR odometry's ATE is about 1 cm (on 60 s).
+  EXPECT_LT(r.accuracy->ate.stats.rmse, 0.010);
+}
+
+TEST(SystemEndToEnd, VisualModeMeetsTheVisualTargetOnAShortRun) {
+  const SimRun run = runOn(kRoomName, roomOptions(), RunMode::kVisual, false);
+  const RunResult& r = run.result;
+  ASSERT_TRUE(r.accuracy);
+  printFigures("visual", r);
+  EXPECT_TRUE(r.output.metric);  // started on LiDAR depth hints
+  EXPECT_EQ(r.accuracy->alignment, eval::Alignment::kSE3);
+  EXPECT_EQ(r.summary.visual_maps, 1u);  // never lost in the room
+  EXPECT_GE(r.output.trajectory.size(), r.summary.images * 8 / 10);  // initialised within the first 20 %
+  // Issue #7's visual target (< 5 cm): met on these 8 s (measured 2.8-4.1 cm
+  // rmse, 2026-11-21), not yet on 60 s sequences.
+  EXPECT_LT(r.accuracy->ate.stats.rmse, 0.05);
+}
+
+TEST(SystemEndToEnd, FusedModeUsesVisionAndStaysAccurate) {
+  const SimRun run = runOn(kRoomName, roomOptions(), RunMode::kFused, false);
+  const RunResult& r = run.result;
+  ASSERT_TRUE(r.accuracy);
+  printFigures("fused", r);
+  EXPECT_EQ(r.output.trajectory.size(), r.summary.images);  // the LiDAR bridges every frame vision lacks
+  EXPECT_GT(r.summary.visual_output, r.summary.images / 4);  // vision is in use for a good part
+  EXPECT_GT(r.summary.fusion_lines_per_frame, 1.0);
+  // What is achieved, not the target: measured 2.6-2.8 cm rmse (2026-11-21)
+  // while the LiDAR alone gives 0.76 cm on the same frames. The fused output
+  // should be at least as good as the LiDAR's; today the detection module
+  // hands over to a visual estimate a few cm off (it accepts up to 2 cm of
+  // disagreement per frame), so this bound only guards against regressions.
+  EXPECT_LT(r.accuracy->ate.stats.rmse, 0.035);
+}
+
+// ---- blackout, continuity, determinism ----
+
+TEST(SystemEndToEnd, BlackoutSwitchesToLidarAndBackDeterministically) {
+  const sim::SimOptions options = blackoutOptions();
+  const SimRun det1 = runOn(kBlackoutName, options, RunMode::kFused, true);
+  const SimRun det2 = runOn(kBlackoutName, options, RunMode::kFused, true);
+  const SimRun threaded = runOn(kBlackoutName, options, RunMode::kFused, false);
+  const RunResult& r = det1.result;
+  ASSERT_TRUE(r.accuracy);
+  printFigures("fused, blackout", r);
+
+  // The detection module: LiDAR from the first black frame, saying why ...
+  const double b0 = options.start_time + kBlackoutBegin, b1 = options.start_time + kBlackoutEnd;
+  for (const SwitchEvent& e : r.output.switches) std::printf("[ figures  ] switch t=%.3f -> %s: %s\n",
+                                                             e.t - options.start_time,
+                                                             e.to == OutputSource::kVisual ? "visual" : "lidar",
+                                                             e.reason.c_str());
+  const auto to_lidar = std::find_if(r.output.switches.begin(), r.output.switches.end(),
+                                     [&](const SwitchEvent& e) { return e.to == OutputSource::kLidar && e.t >= b0; });
+  ASSERT_NE(to_lidar, r.output.switches.end()) << "no switch to the LiDAR at the blackout";
+  EXPECT_LE(to_lidar->t, b0 + 1.0 / 15.0 + 1e-6);  // the first black image (15 Hz)
+  EXPECT_NE(to_lidar->reason.find("dark"), std::string::npos) << to_lidar->reason;
+  // ... LiDAR throughout the blackout, every frame posed ...
+  for (const FrameOutput& f : r.output.frames) {
+    EXPECT_TRUE(f.T_world_camera.has_value()) << f.t - options.start_time;
+    if (f.t >= b0 && f.t <= b1) {
+      EXPECT_EQ(f.source, OutputSource::kLidar) << f.t - options.start_time;
+    }
+  }
+  // ... and back to vision (a new map) within 3 s after it.
+  const auto to_visual = std::find_if(to_lidar, r.output.switches.end(),
+                                      [](const SwitchEvent& e) { return e.to == OutputSource::kVisual; });
+  ASSERT_NE(to_visual, r.output.switches.end()) << "vision never came back";
+  EXPECT_GT(to_visual->t, b1);
+  EXPECT_LT(to_visual->t, b1 + 3.0);
+  EXPECT_EQ(r.summary.visual_maps, 2u);
+
+  // Continuous: at every switch each output step is the true step up to a
+  // few mm (a jump would be the offset between the visual map and the
+  // LiDAR's output, from centimetres to metres for a new map). Elsewhere the
+  // visual estimate's jitter is below 2 cm per step (a frame moves up to 2.7 cm).
+  ASSERT_EQ(r.output.trajectory.size(), r.output.frames.size());
+  const std::vector<double> errors = stepErrors(r.output.trajectory, det1.ground_truth);
+  const auto worst_at = std::max_element(errors.begin(), errors.end());
+  const double worst = *worst_at;
+  const std::size_t worst_k = static_cast<std::size_t>(worst_at - errors.begin()) + 1;
+  std::printf("[ figures  ] largest step error %.4f m at t=%.3f (%s)\n", worst,
+              r.output.trajectory[worst_k].t - options.start_time,
+              r.output.frames[worst_k].source == OutputSource::kVisual ? "visual" : "lidar");
+  for (const SwitchEvent& e : r.output.switches) {
+    const auto at = std::find_if(r.output.trajectory.begin(), r.output.trajectory.end(),
+                                 [&](const StampedPose& p) { return p.t == e.t; });
+    ASSERT_NE(at, r.output.trajectory.end());
+    const std::size_t k = static_cast<std::size_t>(at - r.output.trajectory.begin());
+    ASSERT_GT(k, 0u);
+    std::printf("[ figures  ] step error at the switch t=%.3f: %.4f m\n", e.t - options.start_time, errors[k - 1]);
+    EXPECT_LT(errors[k - 1], 0.01) << e.t - options.start_time;
+  }
+  EXPECT_LT(worst, 0.02);
+  EXPECT_LT(r.accuracy->ate.stats.rmse, 0.02);
+
+  // Deterministic twice: the same files byte for byte.
+  lvslam::testing::TempDir dir;
+  const auto write = [&](const char* name, const RunResult& run) {
+    writeRunOutputs(dir.file(name), run.records, run.output, run.summary, run.accuracy, false);
+  };
+  write("det1", det1.result);
+  write("det2", det2.result);
+  write("threaded", threaded.result);
+  for (const char* file : {"trajectory.tum", "stats.json", "map.ply", "lines.ply"}) {
+    const std::string reference = fileText(dir.path() / "det1" / file);
+    EXPECT_FALSE(reference.empty()) << file;
+    EXPECT_TRUE(reference == fileText(dir.path() / "det2" / file)) << file << " differs between deterministic runs";
+    // The threads change when things run, never what is computed.
+    EXPECT_TRUE(reference == fileText(dir.path() / "threaded" / file)) << file << " differs in the threaded run";
+  }
+  // The same poses, bit for bit, in memory too.
+  const Trajectory& a = det1.result.output.trajectory;
+  const Trajectory& b = threaded.result.output.trajectory;
+  ASSERT_EQ(a.size(), b.size());
+  double largest = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].t, b[k].t);
+    largest = std::max(largest, (a[k].T_world_frame.matrix() - b[k].T_world_frame.matrix()).cwiseAbs().maxCoeff());
+  }
+  EXPECT_EQ(largest, 0.0) << "threaded and deterministic trajectories differ";
+}
+
+}  // namespace
+}  // namespace lvslam::system
