@@ -48,6 +48,7 @@ BENCHMARK(BM_FeatureExtraction)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 void BM_LineExtraction(benchmark::State& state) {
   LineExtractorConfig config;
   config.compute_descriptors = state.range(0) != 0;
+  config.descriptor_octave = static_cast<int>(state.range(1));  // 0: LBD at full resolution
   LineExtractor lines(config);
   const cv::Mat img = benchImage();
   std::vector<RawSegment> segments;
@@ -58,7 +59,8 @@ void BM_LineExtraction(benchmark::State& state) {
   }
   state.counters["lines"] = static_cast<double>(segments.size());
 }
-BENCHMARK(BM_LineExtraction)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+// Args: {descriptors on, LBD octave}.
+BENCHMARK(BM_LineExtraction)->Args({1, 1})->Args({1, 0})->Args({0, 1})->Unit(benchmark::kMillisecond);
 
 void BM_PoseOptimization(benchmark::State& state) {
   const testing::SyntheticScene s = testing::makeScene(2, 600, 60, 0.2, 1);

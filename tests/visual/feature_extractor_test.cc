@@ -97,8 +97,13 @@ TEST(LineExtractor, FindsEachLongEdgeAndRejectsShortOnes) {
   for (size_t i = 1; i < segments.size(); ++i) EXPECT_GE(segments[i - 1].length, segments[i].length);
 }
 
-TEST(LineExtractor, LbdDescriptorsMatchTheSameLinesInAShiftedImage) {
-  LineExtractor lines(LineExtractorConfig{});
+class LbdOctave : public ::testing::TestWithParam<int> {};
+
+// At full resolution and on LBD's half-resolution octave alike.
+TEST_P(LbdOctave, LbdDescriptorsMatchTheSameLinesInAShiftedImage) {
+  LineExtractorConfig config;
+  config.descriptor_octave = GetParam();
+  LineExtractor lines(config);
   const cv::Mat img = testing::texturedImage(640, 480, 3);
   cv::Mat base = img.clone();
   cv::rectangle(base, cv::Point(100, 90), cv::Point(420, 330), cv::Scalar(255), 3);
@@ -128,6 +133,7 @@ TEST(LineExtractor, LbdDescriptorsMatchTheSameLinesInAShiftedImage) {
   ASSERT_GE(checked, 5);
   EXPECT_GE(correct, 0.9 * checked);
 }
+INSTANTIATE_TEST_SUITE_P(LineExtractor, LbdOctave, ::testing::Values(0, 1));
 
 TEST(FeatureExtractor, ProducesUndistortedPointsAndLineCoefficients) {
   const PinholeCamera camera(640, 480, 500.0, 500.0, 319.5, 239.5, RadTanDistortion{-0.1, 0.01, 0.0, 0.0, 0.0});
@@ -169,6 +175,9 @@ TEST(FeatureExtractor, RejectsBadImagesAndConfigs) {
   EXPECT_THROW(FeatureExtractor(bad, vgaCamera()), Error);
   bad = {};
   bad.lines.scale = 0.0;
+  EXPECT_THROW(FeatureExtractor(bad, vgaCamera()), Error);
+  bad = {};
+  bad.lines.descriptor_octave = -1;
   EXPECT_THROW(FeatureExtractor(bad, vgaCamera()), Error);
   EXPECT_THROW(FeatureExtractor(FeatureExtractorConfig{}, PinholeCamera()), Error);
 }

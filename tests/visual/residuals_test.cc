@@ -10,6 +10,7 @@
 #include "lvslam/visual/residuals/line_direction.h"
 #include "lvslam/visual/residuals/line_reprojection.h"
 #include "lvslam/visual/residuals/orthonormal_line_manifold.h"
+#include "lvslam/visual/residuals/point_depth.h"
 #include "lvslam/visual/residuals/point_reprojection.h"
 #include "lvslam/visual/residuals/se3_manifold.h"
 
@@ -148,6 +149,34 @@ TEST(PointReprojectionCost, ZeroAtTheTrueProjectionAndJacobiansMatch) {
   std::vector<double> point_behind(behind.data(), behind.data() + 3);
   const double* params_behind[] = {pose.data(), point_behind.data()};
   EXPECT_FALSE(exact.Evaluate(params_behind, r.data(), nullptr));
+}
+
+TEST(PointDepthCost, WhitenedDepthErrorAndJacobiansMatch) {
+  const Eigen::Isometry3d T = somePose();
+  const Eigen::Vector3d p_c(0.7, -0.4, 3.5);
+  const Eigen::Vector3d p_w = T.inverse() * p_c;
+  std::vector<double> pose = poseVector(T), point(p_w.data(), p_w.data() + 3);
+  const double* params[] = {pose.data(), point.data()};
+  double r = 1.0;
+  const PointDepthCost exact(3.5, 1.0 / (0.02 * 3.5));
+  ASSERT_TRUE(exact.Evaluate(params, &r, nullptr));
+  EXPECT_NEAR(r, 0.0, 1e-9);
+  // LiDAR says 3.4 m with sigma 0.068 m: (3.5 - 3.4) / 0.068.
+  const PointDepthCost off(3.4, 1.0 / (0.02 * 3.4));
+  ASSERT_TRUE(off.Evaluate(params, &r, nullptr));
+  EXPECT_NEAR(r, 0.1 / 0.068, 1e-9);
+  const Se3LeftManifold pose_m;
+  const ceres::EuclideanManifold<3> point_m;
+  expectTangentJacobianMatchesNumeric(off, {pose, point}, {&pose_m, &point_m}, 1e-6);
+  // A point off the optical axis on every side exercises every Jacobian column.
+  const Eigen::Vector3d p_w2 = T.inverse() * Eigen::Vector3d(-1.2, 0.9, 2.0);
+  expectTangentJacobianMatchesNumeric(off, {pose, std::vector<double>(p_w2.data(), p_w2.data() + 3)},
+                                      {&pose_m, &point_m}, 1e-6);
+  // Behind the camera: no residual.
+  const Eigen::Vector3d behind = T.inverse() * Eigen::Vector3d(0.7, -0.4, -3.5);
+  std::vector<double> point_behind(behind.data(), behind.data() + 3);
+  const double* params_behind[] = {pose.data(), point_behind.data()};
+  EXPECT_FALSE(exact.Evaluate(params_behind, &r, nullptr));
 }
 
 TEST(LineReprojectionCost, EndpointDistancesAndJacobiansMatch) {

@@ -33,6 +33,18 @@ TEST(VisualConfig, AbsentKeysKeepDefaultsAndPresentOnesOverride) {
   EXPECT_DOUBLE_EQ(c.initializer.min_parallax_deg, 2.0);
 }
 
+TEST(VisualConfig, KeypointDepthSection) {
+  EXPECT_TRUE(load("visual: {}\n").use_keypoint_depths);
+  const VisualConfig c = load("visual:\n  keypoint_depths: {enabled: false, sigma_ratio: 0.05, huber_delta: 1.5}\n");
+  EXPECT_FALSE(c.use_keypoint_depths);
+  EXPECT_DOUBLE_EQ(c.local_window.ba.depth_sigma_ratio, 0.05);
+  EXPECT_DOUBLE_EQ(c.local_window.ba.depth_huber_delta, 1.5);
+  const std::string bad =
+      lvslam::testing::errorMessageOf([] { load("visual:\n  keypoint_depths: {sigma_ratio: 0.0}\n"); });
+  EXPECT_NE(bad.find("keypoint_depths"), std::string::npos) << bad;
+  EXPECT_THROW(load("visual:\n  keypoint_depths: {sigma: 0.02}\n"), Error);
+}
+
 TEST(VisualConfig, BadValuesAndUnknownKeysNameTheKey) {
   const std::string typo = lvslam::testing::errorMessageOf([] { load("visual:\n  orb: {max_featurs: 10}\n"); });
   EXPECT_NE(typo.find("max_featurs"), std::string::npos) << typo;

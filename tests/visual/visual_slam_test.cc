@@ -191,6 +191,62 @@ TEST_F(VisualSlamTest, FusionLineBecomesALandmarkWithItsPluckerCoordinates) {
   EXPECT_EQ(slam.state(), TrackingState::kTracking);
 }
 
+// LiDAR keypoint depths (here the renderer's exact depth at the keypoint):
+// the face's errors, storage on keyframes only, and points made from them.
+TEST_F(VisualSlamTest, KeypointDepthsAreStoredOnKeyframesAndMakePoints) {
+  VisualSlamConfig config;
+  config.triangulation.create_depth_points = true;
+  VisualSlam slam(config, camera());
+  const auto depthAt = [](const cv::Mat& depth, const Eigen::Vector2d& px) {
+    const int u = static_cast<int>(std::lround(px.x())), v = static_cast<int>(std::lround(px.y()));
+    const bool inside = u >= 0 && v >= 0 && u < depth.cols && v < depth.rows;
+    return inside ? static_cast<double>(depth.at<float>(v, u)) : std::nan("");
+  };
+  int keyframes = 0, non_keyframes = 0;
+  for (size_t i = 0; i < frames_->size() && keyframes < 3; ++i) {
+    const RenderedFrame& f = (*frames_)[i];
+    if (slam.needsDepthHints()) slam.setDepthHints(depthHints(f.depth));
+    const VisualFrameResult r = slam.track(f.image);
+    const std::vector<Eigen::Vector2d> pixels = slam.keypointPixels();
+    ASSERT_EQ(pixels.size(), static_cast<size_t>(r.keypoints));
+    EXPECT_THROW(slam.setKeypointDepths(std::vector<double>(pixels.size() + 1, 2.0)), Error);
+    EXPECT_EQ(slam.currentIsKeyframe(), r.keyframe);
+    std::vector<double> depths;
+    for (const Eigen::Vector2d& px : pixels) depths.push_back(depthAt(f.depth, px));
+    depths.at(0) = -1.0;  // no depth, not an error
+    if (!r.keyframe) {
+      const size_t points = slam.map().points().size();
+      slam.setKeypointDepths(depths);  // ignored
+      EXPECT_EQ(slam.map().points().size(), points);
+      non_keyframes += r.pose_valid;
+      continue;
+    }
+    ++keyframes;
+    const int id = slam.map().keyframes().rbegin()->first;  // the current frame's keyframe
+    const std::vector<int> before = slam.map().keyframe(id).point_landmark;
+    slam.setKeypointDepths(depths);
+    const Keyframe& k = slam.map().keyframe(id);
+    ASSERT_EQ(k.keypoint_depth.size(), depths.size());
+    EXPECT_TRUE(std::isnan(k.keypoint_depth[0]));
+    int created = 0;
+    for (size_t j = 1; j < depths.size(); ++j) {
+      if (std::isfinite(depths[j]) && depths[j] > 0.0) {
+        EXPECT_EQ(k.keypoint_depth[j], depths[j]);
+      }
+      if (before[j] >= 0 || k.point_landmark[j] < 0) continue;
+      // A new point lies on the keypoint's ray at its depth.
+      ++created;
+      const Eigen::Vector3d p_c = k.T_camera_world * slam.map().point(k.point_landmark[j]).p_world;
+      EXPECT_NEAR(p_c.z(), depths[j], 1e-9);
+      EXPECT_NEAR(camera().fx() * p_c.x() / p_c.z() + camera().cx(), k.features.points[j].x(), 1e-6);
+    }
+    EXPECT_GT(created, 0);
+    EXPECT_LE(created, config.triangulation.max_depth_points);
+  }
+  EXPECT_EQ(keyframes, 3);
+  EXPECT_GT(non_keyframes, 0);
+}
+
 TEST(ImageStatisticsTest, BrightnessAndContrastOfKnownImages) {
   cv::Mat half(10, 10, CV_8UC1, cv::Scalar(0));
   half.colRange(5, 10).setTo(200);

@@ -30,12 +30,14 @@ void loadFeatures(const YamlConfig& n, FeatureExtractorConfig& c) {
     c.orb.grid_cell_size = orb->getInt("grid_cell_size", c.orb.grid_cell_size);
   }
   if (const auto lines = n.find("lines")) {
-    rejectUnknownKeys(*lines, {"enabled", "scale", "density_threshold", "min_length_ratio", "max_lines"});
+    rejectUnknownKeys(*lines, {"enabled", "scale", "density_threshold", "min_length_ratio", "max_lines",
+                               "descriptor_octave"});
     c.extract_lines = lines->getBool("enabled", c.extract_lines);
     c.lines.scale = lines->getDouble("scale", c.lines.scale);
     c.lines.density_threshold = lines->getDouble("density_threshold", c.lines.density_threshold);
     c.lines.min_length_ratio = lines->getDouble("min_length_ratio", c.lines.min_length_ratio);
     c.lines.max_lines = lines->getInt("max_lines", c.lines.max_lines);
+    c.lines.descriptor_octave = lines->getInt("descriptor_octave", c.lines.descriptor_octave);
   }
 }
 
@@ -70,7 +72,7 @@ void loadOptimisation(const YamlConfig& n, VisualConfig& c) {
 
 VisualConfig loadVisualConfig(const YamlConfig& section) {
   VisualConfig c;
-  rejectUnknownKeys(section, {"orb", "lines", "pose", "bundle_adjustment", "initializer"});
+  rejectUnknownKeys(section, {"orb", "lines", "pose", "bundle_adjustment", "initializer", "keypoint_depths"});
   loadFeatures(section, c.features);
   loadOptimisation(section, c);
   if (const auto init = section.find("initializer")) {
@@ -78,6 +80,15 @@ VisualConfig loadVisualConfig(const YamlConfig& section) {
     c.initializer.min_parallax_deg = init->getDouble("min_parallax_deg", c.initializer.min_parallax_deg);
     c.initializer.min_triangulated = init->getInt("min_triangulated", c.initializer.min_triangulated);
     c.initializer.min_depth_hints = init->getInt("min_depth_hints", c.initializer.min_depth_hints);
+  }
+  if (const auto depths = section.find("keypoint_depths")) {
+    rejectUnknownKeys(*depths, {"enabled", "sigma_ratio", "huber_delta"});
+    BundleAdjustmentConfig& ba = c.local_window.ba;
+    c.use_keypoint_depths = depths->getBool("enabled", c.use_keypoint_depths);
+    ba.depth_sigma_ratio = depths->getDouble("sigma_ratio", ba.depth_sigma_ratio);
+    ba.depth_huber_delta = depths->getDouble("huber_delta", ba.depth_huber_delta);
+    if (!(ba.depth_sigma_ratio > 0.0) || !(ba.depth_huber_delta > 0.0))
+      depths->fail("sigma_ratio and huber_delta must be positive");
   }
   // The extractors and the initializer validate the rest when constructed;
   // do it now so a bad file fails at load time, naming the file.

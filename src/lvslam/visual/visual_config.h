@@ -19,6 +19,9 @@ struct VisualConfig {
   PoseOptimizationConfig pose;
   LocalWindowConfig local_window;  // includes the BA settings
   TwoViewInitializerConfig initializer;
+  // LiDAR depth of keyframe keypoints (VisualSlam::setKeypointDepths) enters
+  // local BA as depth residuals (local_window.ba.depth_*); off: ignored.
+  bool use_keypoint_depths = true;
 };
 
 // `section` is the node of the "visual" key.

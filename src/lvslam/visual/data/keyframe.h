@@ -1,6 +1,6 @@
 #pragma once
-// A keyframe: a frame's features, its pose and which landmark each feature
-// observes (-1: none).
+// A keyframe: a frame's features, its pose, which landmark each feature
+// observes (-1: none) and, with a LiDAR, the measured depth of its keypoints.
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -16,6 +16,9 @@ struct Keyframe {
   FeatureFrame features;
   std::vector<int> point_landmark;  // per keypoint: landmark id or -1
   std::vector<int> line_landmark;   // per line segment: landmark id or -1
+  // Per keypoint: LiDAR depth z in this camera frame, NaN where none; empty
+  // when no depths were given (VisualMap::setKeypointDepths).
+  std::vector<double> keypoint_depth;
 };
 
 }  // namespace lvslam::visual

@@ -1,6 +1,8 @@
 #include "lvslam/visual/data/visual_map.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "lvslam/core/error.h"
@@ -134,6 +136,18 @@ void VisualMap::removeKeyframe(int keyframe) {
 void VisualMap::setFusionDirection(int line, const Eigen::Vector3d& d_fu) {
   if (!d_fu.allFinite() || !(d_fu.norm() > 0.0)) throw Error("VisualMap", "fusion direction must be finite and non-zero");
   find(lines_, line, "line").fusion_direction = d_fu.normalized();
+}
+
+void VisualMap::setKeypointDepths(int keyframe, std::vector<double> depths) {
+  Keyframe& k = find(keyframes_, keyframe, "keyframe");
+  if (depths.size() != k.features.keypoints.size()) {
+    throw Error("VisualMap", "keyframe " + std::to_string(keyframe) + " has " +
+                                 std::to_string(k.features.keypoints.size()) + " keypoints but " +
+                                 std::to_string(depths.size()) + " keypoint depths were given");
+  }
+  for (double& z : depths)
+    if (!std::isfinite(z) || !(z > 0.0)) z = std::numeric_limits<double>::quiet_NaN();
+  k.keypoint_depth = std::move(depths);
 }
 
 Keyframe& VisualMap::keyframe(int id) { return find(keyframes_, id, "keyframe"); }

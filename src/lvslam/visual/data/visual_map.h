@@ -38,6 +38,10 @@ class VisualMap {
   void removeKeyframe(int keyframe);
 
   void setFusionDirection(int line, const Eigen::Vector3d& d_fu);
+  // LiDAR depth per keypoint of the keyframe (index = keypoint index);
+  // non-finite or non-positive entries are stored as NaN (no depth). Throws
+  // lvslam::Error on an unknown keyframe or a size other than its keypoints'.
+  void setKeypointDepths(int keyframe, std::vector<double> depths);
 
   Keyframe& keyframe(int id);
   const Keyframe& keyframe(int id) const;

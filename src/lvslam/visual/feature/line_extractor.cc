@@ -27,19 +27,26 @@ void validate(const LineExtractorConfig& c) {
     throw Error(where, "min_length_ratio must be in [0, 1)");
   }
   if (c.max_lines < 1) throw Error(where, "max_lines must be >= 1");
+  if (c.descriptor_octave < 0 || c.descriptor_octave > 3) throw Error(where, "descriptor_octave must be in [0, 3]");
 }
 
-cv::line_descriptor::KeyLine toKeyLine(const RawSegment& s, int id) {
+cv::line_descriptor::KeyLine toKeyLine(const RawSegment& s, int id, int octave) {
+  // LBD's pyramid halves each octave (reductionRatio 2).
+  const float scale = 1.0f / static_cast<float>(1 << octave);
   cv::line_descriptor::KeyLine kl;
-  kl.startPointX = kl.sPointInOctaveX = s.start.x;
-  kl.startPointY = kl.sPointInOctaveY = s.start.y;
-  kl.endPointX = kl.ePointInOctaveX = s.end.x;
-  kl.endPointY = kl.ePointInOctaveY = s.end.y;
-  kl.lineLength = s.length;
-  kl.numOfPixels = static_cast<int>(std::lround(s.length));
+  kl.startPointX = s.start.x;
+  kl.startPointY = s.start.y;
+  kl.endPointX = s.end.x;
+  kl.endPointY = s.end.y;
+  kl.sPointInOctaveX = scale * s.start.x;
+  kl.sPointInOctaveY = scale * s.start.y;
+  kl.ePointInOctaveX = scale * s.end.x;
+  kl.ePointInOctaveY = scale * s.end.y;
+  kl.lineLength = scale * s.length;
+  kl.numOfPixels = std::max(1, static_cast<int>(std::lround(scale * s.length)));
   kl.angle = std::atan2(s.end.y - s.start.y, s.end.x - s.start.x);
   kl.pt = 0.5f * (s.start + s.end);
-  kl.octave = 0;  // lines only at full resolution, as Structure PLP (after PL-VINS)
+  kl.octave = octave;
   kl.class_id = id;
   kl.response = 0.0f;
   kl.size = 0.0f;
@@ -83,7 +90,7 @@ void LineExtractor::extract(const cv::Mat& gray, std::vector<RawSegment>& segmen
   std::vector<cv::line_descriptor::KeyLine> keylines;
   keylines.reserve(segments.size());
   for (size_t i = 0; i < segments.size(); ++i) {
-    keylines.push_back(toKeyLine(segments[i], static_cast<int>(i)));
+    keylines.push_back(toKeyLine(segments[i], static_cast<int>(i), config_.descriptor_octave));
   }
   cv::Mat computed;
   lbd_->compute(gray, keylines, computed);

@@ -24,6 +24,12 @@ struct LineExtractorConfig {
   // Segments shorter than this fraction of min(width, height) are rejected.
   double min_length_ratio = 0.125;
   int max_lines = 150;  // longest kept; bounds LBD and matching cost
+  // Pyramid octave (half resolution per octave) LBD describes the segments
+  // on: LBD's own multi-scale support (Zhang & Koch 2013). Octave 1 halves
+  // LBD's cost (bands 14 instead of 7 px wide) and tracked as many lines on
+  // the simulated room/hall, but failed the fused blackout system test twice
+  // (docs/benchmarks.md, "Visual speed"), so full resolution stays the default.
+  int descriptor_octave = 0;
   bool compute_descriptors = true;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <Eigen/SVD>
 
@@ -87,6 +88,29 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
 }
 
 }  // namespace
+
+std::vector<int> createDepthPoints(VisualMap& map, int keyframe, const PinholeIntrinsics& K,
+                                   const PointTriangulationConfig& config) {
+  std::vector<int> created;
+  const Keyframe& k = map.keyframe(keyframe);
+  if (!config.create_depth_points || k.keypoint_depth.size() != k.features.points.size()) return created;
+  std::vector<std::pair<double, int>> candidates;  // (depth, keypoint)
+  for (size_t i = 0; i < k.keypoint_depth.size(); ++i) {
+    const double z = k.keypoint_depth[i];
+    if (k.point_landmark[i] < 0 && std::isfinite(z) && z > 0.0) candidates.emplace_back(z, static_cast<int>(i));
+  }
+  std::sort(candidates.begin(), candidates.end());
+  if (candidates.size() > static_cast<size_t>(std::max(0, config.max_depth_points)))
+    candidates.resize(static_cast<size_t>(std::max(0, config.max_depth_points)));
+  const Eigen::Isometry3d T_world_camera = k.T_camera_world.inverse();
+  for (const auto& [z, i] : candidates) {
+    const Eigen::Vector3d p_camera = z * normalised(k.features.points[i], K).homogeneous();
+    const int id = map.addPointLandmark(T_world_camera * p_camera, k.features.descriptors.row(i));
+    map.addPointObservation(id, keyframe, i);
+    created.push_back(id);
+  }
+  return created;
+}
 
 double medianSceneDepth(const VisualMap& map, int keyframe) {
   const Keyframe& k = map.keyframe(keyframe);

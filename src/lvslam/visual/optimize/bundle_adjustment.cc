@@ -14,6 +14,7 @@
 #include "lvslam/visual/residuals/line_direction.h"
 #include "lvslam/visual/residuals/line_reprojection.h"
 #include "lvslam/visual/residuals/orthonormal_line_manifold.h"
+#include "lvslam/visual/residuals/point_depth.h"
 #include "lvslam/visual/residuals/point_reprojection.h"
 #include "lvslam/visual/residuals/se3_manifold.h"
 
@@ -41,6 +42,10 @@ void validate(const BundleAdjustmentProblem& p) {
     checkIndex(p.point_observations[i].keyframe, p.keyframes.size(), "keyframe", i);
     checkIndex(p.point_observations[i].point, p.points.size(), "point", i);
     checkWeight(p.point_observations[i].inv_sigma2, i);
+    const double depth = p.point_observations[i].depth;
+    if (std::isfinite(depth) && !(depth > 0.0)) {
+      throw Error(kWhere, "observation " + std::to_string(i) + " has a non-positive depth");
+    }
   }
   for (size_t i = 0; i < p.line_observations.size(); ++i) {
     checkIndex(p.line_observations[i].keyframe, p.keyframes.size(), "keyframe", i);
@@ -81,12 +86,13 @@ ceres::Solver::Options solverOptions(const BundleAdjustmentConfig& config, int i
   return o;
 }
 
-// Squared whitened residual (no loss) of a residual block.
+// Squared whitened residual (no loss) of a residual block (1 or 2 rows).
 double chi2Of(const ceres::Problem& problem, ceres::ResidualBlockId id) {
   double cost = 0.0;
   std::array<double, 2> r{};
   if (!problem.EvaluateResidualBlock(id, false, &cost, r.data(), nullptr)) return INFINITY;
-  return r[0] * r[0] + r[1] * r[1];
+  const int rows = problem.GetCostFunctionForResidualBlock(id)->num_residuals();
+  return rows == 1 ? r[0] * r[0] : r[0] * r[0] + r[1] * r[1];
 }
 
 // The Ceres problem of one BA run: parameter blocks, residuals and their ids.
@@ -94,11 +100,14 @@ class CeresBundleAdjustment {
  public:
   CeresBundleAdjustment(BundleAdjustmentProblem& p, const BundleAdjustmentConfig& config)
       : p_(p), config_(config), b_(makeBlocks(p)), huber_(config.huber_delta),
-        direction_huber_(config.direction_huber_delta), problem_(problemOptions()),
+        direction_huber_(config.direction_huber_delta), depth_huber_(config.depth_huber_delta),
+        problem_(problemOptions()),
         K_line_(lineProjectionMatrix(p.intrinsics.fx, p.intrinsics.fy, p.intrinsics.cx, p.intrinsics.cy)),
-        point_ids_(p.point_observations.size(), nullptr), line_ids_(p.line_observations.size(), nullptr),
+        point_ids_(p.point_observations.size(), nullptr), depth_ids_(p.point_observations.size(), nullptr),
+        line_ids_(p.line_observations.size(), nullptr),
         pose_used_(b_.poses.size(), false), point_used_(b_.points.size(), false), line_used_(b_.lines.size(), false) {
     addPointResiduals();
+    addDepthResiduals();
     addLineResiduals();
     configureBlocks();
   }
@@ -114,6 +123,14 @@ class CeresBundleAdjustment {
   // Drops chi2 outliers from the problem (ORB-SLAM's local BA between stages).
   void classify(BundleAdjustmentResult& result) {
     classify(point_ids_, result.point_inlier, config_.chi2_point);
+    for (size_t i = 0; i < depth_ids_.size(); ++i) {  // an outlier observation takes its depth along
+      if (depth_ids_[i] && !point_ids_[i]) {
+        problem_.RemoveResidualBlock(depth_ids_[i]);
+        depth_ids_[i] = nullptr;
+        result.depth_inlier[i] = false;
+      }
+    }
+    classify(depth_ids_, result.depth_inlier, config_.chi2_depth);
     classify(line_ids_, result.line_inlier, config_.chi2_line);
   }
 
@@ -148,6 +165,17 @@ class CeresBundleAdjustment {
       point_ids_[i] = problem_.AddResidualBlock(new PointReprojectionCost(o.pixel, K, sqrt_info), &huber_,
                                                 b_.poses[o.keyframe].data(), b_.points[o.point].data());
       pose_used_[o.keyframe] = point_used_[o.point] = true;
+    }
+  }
+
+  // Only observations whose reprojection term exists (in front of the camera).
+  void addDepthResiduals() {
+    for (size_t i = 0; i < p_.point_observations.size(); ++i) {
+      const BaPointObservation& o = p_.point_observations[i];
+      if (!point_ids_[i] || !std::isfinite(o.depth)) continue;
+      const double inv_sigma = 1.0 / (config_.depth_sigma_ratio * o.depth);
+      depth_ids_[i] = problem_.AddResidualBlock(new PointDepthCost(o.depth, inv_sigma), &depth_huber_,
+                                                b_.poses[o.keyframe].data(), b_.points[o.point].data());
     }
   }
 
@@ -200,10 +228,10 @@ class CeresBundleAdjustment {
   Blocks b_;
   Se3LeftManifold pose_manifold_;
   OrthonormalLineManifold line_manifold_;
-  ceres::HuberLoss huber_, direction_huber_;
+  ceres::HuberLoss huber_, direction_huber_, depth_huber_;
   ceres::Problem problem_;  // after the manifolds and losses it borrows
   Eigen::Matrix3d K_line_;
-  std::vector<ceres::ResidualBlockId> point_ids_, line_ids_;
+  std::vector<ceres::ResidualBlockId> point_ids_, depth_ids_, line_ids_;
   std::vector<bool> pose_used_, point_used_, line_used_;
 };
 
@@ -211,9 +239,12 @@ class CeresBundleAdjustment {
 
 BundleAdjustmentResult runBundleAdjustment(BundleAdjustmentProblem& p, const BundleAdjustmentConfig& config) {
   validate(p);
+  if (!(config.depth_sigma_ratio > 0.0) || !(config.depth_huber_delta > 0.0))
+    throw Error(kWhere, "depth_sigma_ratio and depth_huber_delta must be positive");
   BundleAdjustmentResult result;
   result.point_inlier.assign(p.point_observations.size(), false);
   result.line_inlier.assign(p.line_observations.size(), false);
+  result.depth_inlier.assign(p.point_observations.size(), false);
   CeresBundleAdjustment ba(p, config);
   if (ba.empty()) return result;
   ceres::Solver::Summary summary = ba.solve(config.first_stage_iterations);

@@ -4,6 +4,7 @@
 // direction term of Cao et al., Sec. III-D). Plain data in and out: the map
 // copies its local window in, runs this, and copies the result back.
 // Ceres lives only in the .cc.
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -30,6 +31,14 @@ struct BundleAdjustmentConfig {
   double direction_weight = 1000.0;
   double direction_huber_delta = 1.0;
   bool use_direction_residual = true;
+  // LiDAR depth of keypoints, used for every observation that has one
+  // (residuals/point_depth.h): sigma = ratio * z_lidar, Huber width and
+  // outlier bound of the 1-DoF chi2 at 95 %. A depth found to be an outlier
+  // drops only its depth term (the LiDAR point under the keypoint may belong
+  // to another surface); the reprojection stays.
+  double depth_sigma_ratio = 0.02;
+  double depth_huber_delta = 1.959963985;  // sqrt(3.841)
+  double chi2_depth = 3.841;
   int num_threads = 1;
 };
 
@@ -54,6 +63,8 @@ struct BaPointObservation {
   int keyframe = 0, point = 0;
   Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
   double inv_sigma2 = 1.0;  // 1 / sigma^2 of the pyramid level
+  // LiDAR depth z (camera frame) of the keypoint in this keyframe; NaN: none.
+  double depth = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct BaLineObservation {
@@ -76,11 +87,13 @@ struct BundleAdjustmentResult {
   double initial_cost = 0.0, final_cost = 0.0;
   std::vector<bool> point_inlier;  // per point observation
   std::vector<bool> line_inlier;   // per line observation
+  std::vector<bool> depth_inlier;  // per point observation: its depth term was used and kept
 };
 
 // Optimises the non-fixed keyframes, points and lines of the problem in place
 // (lines come back with |(m, d)| = 1). Throws lvslam::Error on an index out of
-// range; observations that cannot be evaluated (behind the camera) are outliers.
+// range or a finite non-positive depth; observations that cannot be evaluated
+// (behind the camera) are outliers.
 BundleAdjustmentResult runBundleAdjustment(BundleAdjustmentProblem& problem,
                                            const BundleAdjustmentConfig& config = {});
 

@@ -1,6 +1,7 @@
 #include "lvslam/visual/optimize/local_window_adjustment.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 namespace lvslam::visual {
@@ -58,8 +59,11 @@ void collectObservations(const VisualMap& map, BundleAdjustmentProblem& problem,
       const int level = k.features.keypoints[o.index].octave;
       const auto& inv = k.features.pyramid.inv_sigma2;
       const double inv_sigma2 = level >= 0 && static_cast<size_t>(level) < inv.size() ? inv[level] : 1.0;
-      problem.point_observations.push_back(
-          {keyframeIndex(map, o.keyframe, problem, idx), static_cast<int>(j), k.features.points[o.index], inv_sigma2});
+      const double depth = static_cast<size_t>(o.index) < k.keypoint_depth.size()
+                               ? k.keypoint_depth[o.index]
+                               : std::numeric_limits<double>::quiet_NaN();
+      problem.point_observations.push_back({keyframeIndex(map, o.keyframe, problem, idx), static_cast<int>(j),
+                                            k.features.points[o.index], inv_sigma2, depth});
       idx.point_obs.push_back({o.keyframe, idx.point_ids[j]});
     }
   }

@@ -94,6 +94,7 @@ struct VisualSlam::Impl {
   Eigen::Isometry3d velocity = Eigen::Isometry3d::Identity();  // T_last * T_before^-1
   int reference_keyframe = -1;
   int last_keyframe_frame = 0;
+  int reference_tracked_keyframe = -1, reference_tracked_points = 0;  // points tracked when it was inserted
   int lost_frames = 0;
   std::vector<FusionLineWait> fusion_lines;
   std::vector<int> last_points;  // landmarks the last tracked frame observed
@@ -248,11 +249,15 @@ bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
 }
 
 bool VisualSlam::Impl::needKeyframe() const {
-  const Keyframe& ref = map.keyframe(reference_keyframe);
-  const size_t min_observers = 2;
-  int ref_tracked = 0;
-  for (const int id : ref.point_landmark)
-    ref_tracked += id >= 0 && !map.point(id).bad && map.point(id).observations.size() >= min_observers;
+  // View overlap (ORB-SLAM's c2, measured against what the reference keyframe
+  // tracked when it was inserted: its landmark count includes the points the
+  // mapper triangulated afterwards, which a frame only partly re-finds, so a
+  // ratio against it fired at every minimum interval).
+  int ref_tracked = reference_tracked_points;
+  if (reference_tracked_keyframe != reference_keyframe) {
+    ref_tracked = 0;
+    for (const int id : map.keyframe(reference_keyframe).point_landmark) ref_tracked += id >= 0 && !map.point(id).bad;
+  }
   const int since = frame_index - last_keyframe_frame;
   const bool few = current.point_inliers < config.keyframe_tracked_ratio * ref_tracked ||
                    current.point_inliers < config.keyframe_min_tracked;
@@ -261,6 +266,7 @@ bool VisualSlam::Impl::needKeyframe() const {
 }
 
 void VisualSlam::Impl::insertKeyframe() {
+  reference_tracked_points = current.point_inliers;  // before the mapper adds points
   Keyframe k;
   k.timestamp = current.features.timestamp;
   k.T_camera_world = current.T_camera_world;
@@ -275,6 +281,7 @@ void VisualSlam::Impl::insertKeyframe() {
   current.T_camera_world = map.keyframe(id).T_camera_world;
   T_last = current.T_camera_world;
   reference_keyframe = id;
+  reference_tracked_keyframe = id;
   current_keyframe = id;
   last_keyframe_frame = frame_index;
 }
@@ -293,6 +300,7 @@ void VisualSlam::Impl::newMap() {
   metric = false;
   reference.reset();
   reference_keyframe = -1;
+  reference_tracked_keyframe = -1;  // keyframe ids restart with the new map
   state = TrackingState::kInitializing;
 }
 
@@ -411,6 +419,32 @@ int VisualSlam::addFusionLine(int segment, const Eigen::Vector3d& A_camera, cons
   }
   s.fusion_lines.push_back({id, s.frame_index + s.config.fusion_line_lifetime});
   return id;
+}
+
+std::vector<Eigen::Vector2d> VisualSlam::keypointPixels() const {
+  std::vector<Eigen::Vector2d> pixels;
+  pixels.reserve(impl_->current.features.keypoints.size());
+  for (const cv::KeyPoint& k : impl_->current.features.keypoints) pixels.emplace_back(k.pt.x, k.pt.y);
+  return pixels;
+}
+
+bool VisualSlam::currentIsKeyframe() const {
+  return impl_->current_keyframe >= 0 && impl_->map.hasKeyframe(impl_->current_keyframe);
+}
+
+void VisualSlam::setKeypointDepths(const std::vector<double>& depths) {
+  const size_t keypoints = impl_->current.features.keypoints.size();
+  if (depths.size() != keypoints) {
+    throw Error("VisualSlam::setKeypointDepths", std::to_string(depths.size()) + " depths for " +
+                                                     std::to_string(keypoints) + " keypoints of the current frame");
+  }
+  Impl& s = *impl_;
+  if (!currentIsKeyframe() || !s.config.visual.use_keypoint_depths) return;
+  s.map.setKeypointDepths(s.current_keyframe, depths);
+  // The mapper has triangulated this keyframe already: the keypoints still
+  // without a landmark get one from their depth.
+  const std::vector<int> created = createDepthPoints(s.map, s.current_keyframe, s.K, s.config.triangulation);
+  s.mapper.addRecentPoints(created, s.current_keyframe);
 }
 
 }  // namespace lvslam::visual
