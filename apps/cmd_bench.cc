@@ -49,6 +49,8 @@ std::vector<Column> columns(bool ablations) {
   out.push_back({"fused w/o e_dir", {"--mode", "fused", "--ablate", "direction-residual"}});
   out.push_back({"fused w/o d_v_mean", {"--mode", "fused", "--ablate", "lidar-direction-refinement"}});
   out.push_back({"fused w/o fusion lines", {"--mode", "fused", "--ablate", "fusion-lines"}});
+  // lvslam's addition to the paper (docs/visual-subsystem.md).
+  out.push_back({"fused w/o keypoint depths", {"--mode", "fused", "--ablate", "keypoint-depths"}});
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "lvslam/fusion/fusion_framework.h"
 #include "lvslam/visual/tracking/visual_slam.h"
 
 namespace lvslam::system {
@@ -25,6 +26,20 @@ struct CameraLine {
   Eigen::Vector3d A = Eigen::Vector3d::Zero(), B = Eigen::Vector3d::Zero();
 };
 
+// What the visual thread hands the fusion framework for one camera frame.
+struct VisualFrameFeatures {
+  std::vector<fusion::ImageSegment> segments;
+  // Keypoints (raw pixels) of a frame that became a keyframe, for LiDAR
+  // depth; empty otherwise.
+  std::vector<Eigen::Vector2d> keyframe_keypoints;
+};
+
+// The fusion framework's answer for one camera frame.
+struct FusionAnswer {
+  fusion::FusionResult result;
+  std::vector<double> keypoint_depths;  // per keyframe keypoint, NaN where none
+};
+
 // The LiDAR thread's view of camera frame `index`.
 struct LidarFrameRecord {
   double t = 0.0;
@@ -32,6 +47,7 @@ struct LidarFrameRecord {
   std::vector<CameraLine> fusion_lines;
   std::size_t lidar_features = 0;   // accumulated features the fusion framework saw
   std::size_t lidar_points_refined = 0;  // linear points given d_v_mean
+  std::size_t keypoint_depths = 0;       // keyframe keypoints given a LiDAR depth
   double fusion_ms = 0.0;
 };
 

@@ -1,12 +1,14 @@
 #include "lvslam/system/lidar_worker.h"
 
+#include <cmath>
+
 #include "lvslam/core/se3.h"
 #include "lvslam/system/stopwatch.h"
 
 namespace lvslam::system {
 
 LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibration)
-    : odometry_(config.lidar), map_(config.map_voxel) {
+    : odometry_(config.lidar), keypoint_depth_radius_px_(config.keypoint_depth_radius_px), map_(config.map_voxel) {
   if (config.mode == RunMode::kFused && calibration.camera) {
     fusion_.emplace(*calibration.camera, calibration.T_camera_lidar, config.fusion);
     fusion_->setLidarFeedback(config.lidar_direction_refinement);
@@ -22,22 +24,26 @@ void LidarWorker::addScan(const LidarScan& scan) {
   scan_pending_ = true;
 }
 
-fusion::FusionResult LidarWorker::addFrame(double t, const std::vector<fusion::ImageSegment>& segments) {
+FusionAnswer LidarWorker::addFrame(double t, const VisualFrameFeatures& features) {
   LidarFrameRecord record;
   record.t = t;
-  fusion::FusionResult result;
+  FusionAnswer answer;
   if (fusion_ && scan_pending_) {
     const Stopwatch watch;
-    fusion::FusionFrameOutput out = fusion_->processImage(t, segments, odometry_);
+    fusion::FusionFrameOutput out = fusion_->processImage(t, features.segments, odometry_);
+    if (!features.keyframe_keypoints.empty())
+      answer.keypoint_depths = fusion_->framework().pointDepths(out.T_world_lidar, features.keyframe_keypoints,
+                                                                 keypoint_depth_radius_px_);
     record.fusion_ms = watch.ms();
     record.lidar_features = out.result.lidar_features;
     record.lidar_points_refined = out.lidar_points_changed;
+    for (const double z : answer.keypoint_depths) record.keypoint_depths += std::isfinite(z) ? 1 : 0;
     for (const fusion::FusionLine& line : out.result.lines) record.fusion_lines.push_back({line.A, line.B});
-    result = std::move(out.result);
+    answer.result = std::move(out.result);
   }
   frames_waiting_.push_back(frames_.size());
   frames_.push_back(std::move(record));
-  return result;
+  return answer;
 }
 
 void LidarWorker::finish() {

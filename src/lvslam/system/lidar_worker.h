@@ -24,9 +24,10 @@ class LidarWorker {
   LidarWorker(const SystemConfig& config, const Calibration& calibration);
 
   void addScan(const LidarScan& scan);
-  // The next camera frame at time t. Segments (fused mode) go through the
-  // fusion framework, whose lines are returned (camera frame at t).
-  fusion::FusionResult addFrame(double t, const std::vector<fusion::ImageSegment>& segments);
+  // The next camera frame at time t. Its features (fused mode) go through
+  // the fusion framework: fusion lines (camera frame at t) and LiDAR depth
+  // for the keyframe keypoints come back.
+  FusionAnswer addFrame(double t, const VisualFrameFeatures& features);
   // Registers the last scan: call once after the last scan and frame.
   void finish();
 
@@ -42,6 +43,7 @@ class LidarWorker {
 
   lidar::LidarOdometry odometry_;
   std::optional<fusion::FusionStep> fusion_;
+  double keypoint_depth_radius_px_;
   LidarMapExport map_;
   bool scan_pending_ = false;
   double pending_prepare_ms_ = 0.0;

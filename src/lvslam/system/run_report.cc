@@ -56,6 +56,7 @@ std::string frameJson(const PipelineRecords& records, const SystemOutput& output
                            .addCount("lines", l->fusion_lines.size())
                            .addCount("lidar_features", l->lidar_features)
                            .addCount("lidar_points_refined", l->lidar_points_refined)
+                           .addCount("keypoint_depths", l->keypoint_depths)
                            .str());
   if (timings) {
     JsonObject t;

@@ -29,6 +29,9 @@ struct SystemConfig {
   bool lidar_direction_refinement = true;  // d_v_mean reaches the LiDAR's linear points
   // LiDAR points this close in time to an image give its depth hints.
   double depth_hint_max_dt = 0.02;
+  // A keyframe keypoint takes the LiDAR depth of features this close (pixels;
+  // the features are ~2000 per image, 3 px gave 13 depths per keyframe, 8 px 165).
+  double keypoint_depth_radius_px = 8.0;
   double map_voxel = 0.2;  // m, voxel of the exported LiDAR map (map.ply)
   // One thread, fixed order: byte-identical output for the same input.
   bool deterministic = false;
@@ -36,10 +39,13 @@ struct SystemConfig {
 
 // Switches off one contribution of the paper for the ablation study:
 // "direction-residual" (e_dir in bundle adjustment), "lidar-direction-
-// refinement" (d_v_mean), "fusion-lines" (fusion lines as visual landmarks).
+// refinement" (d_v_mean), "fusion-lines" (fusion lines as visual landmarks);
+// or lvslam's own addition, "keypoint-depths" (LiDAR depth for keyframe
+// points in bundle adjustment, beyond the paper's metric start).
 // Throws lvslam::Error naming `where` for another name.
 void applyAblation(SystemConfig& config, const std::string& name, const std::string& where);
-inline const char* const kAblations[] = {"direction-residual", "lidar-direction-refinement", "fusion-lines"};
+inline const char* const kAblations[] = {"direction-residual", "lidar-direction-refinement", "fusion-lines",
+                                         "keypoint-depths"};
 
 // `root` is the whole file; the mode and the deterministic flag come from the command line.
 SystemConfig loadSystemConfig(const YamlConfig& root);

@@ -42,10 +42,10 @@ Workers makeWorkers(const SensorSource& source, const SystemConfig& config) {
 // One camera frame's exchange between the threads: the visual thread's line
 // segments to the LiDAR thread, the fusion framework's answer back.
 struct FrameExchange {
-  std::promise<std::vector<fusion::ImageSegment>> segments;
-  std::promise<fusion::FusionResult> fusion;
-  std::future<std::vector<fusion::ImageSegment>> segments_future = segments.get_future();
-  std::future<fusion::FusionResult> fusion_future = fusion.get_future();
+  std::promise<VisualFrameFeatures> segments;
+  std::promise<FusionAnswer> fusion;
+  std::future<VisualFrameFeatures> segments_future = segments.get_future();
+  std::future<FusionAnswer> fusion_future = fusion.get_future();
 };
 using ExchangePtr = std::shared_ptr<FrameExchange>;
 
@@ -105,9 +105,9 @@ void runVisualJob(VisualWorker& worker, VisualJob& job) {
   if (auto* scan = std::get_if<ScanPtr>(&job)) return worker.addScan(*scan);
   auto& frame = std::get<VisualFrameJob>(job);
   try {
-    std::vector<fusion::ImageSegment> segments = worker.track(frame.image);
+    VisualFrameFeatures features = worker.track(frame.image);
     if (!frame.exchange) return;
-    frame.exchange->segments.set_value(std::move(segments));
+    frame.exchange->segments.set_value(std::move(features));
     worker.applyFusion(frame.exchange->fusion_future.get());
   } catch (...) {
     if (frame.exchange) failPromise(frame.exchange->segments, std::current_exception());
@@ -233,8 +233,8 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
         const ExchangePtr exchange =
             workers.lidar && workers.visual && !config.deterministic ? std::make_shared<FrameExchange>() : nullptr;
         if (workers.visual && !threaded) {
-          std::vector<fusion::ImageSegment> segments = workers.visual->track(image);
-          if (workers.lidar) workers.visual->applyFusion(workers.lidar->addFrame(t, segments));
+          const VisualFrameFeatures features = workers.visual->track(image);
+          if (workers.lidar) workers.visual->applyFusion(workers.lidar->addFrame(t, features));
         } else {
           if (workers.visual) ok = toVisual(VisualFrameJob{std::move(image), exchange});
           if (ok && workers.lidar) ok = toLidar(LidarFrameJob{t, exchange});

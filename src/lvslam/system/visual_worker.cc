@@ -18,6 +18,7 @@ const PinholeCamera& requireCamera(const Calibration& calibration) {
 VisualWorker::VisualWorker(const SystemConfig& config, const Calibration& calibration, bool has_lidar)
     : calibration_(calibration),
       use_fusion_lines_(config.fusion_lines_in_tracking),
+      use_keypoint_depths_(config.visual.visual.use_keypoint_depths),
       hint_max_dt_(config.depth_hint_max_dt),
       has_lidar_(has_lidar),
       slam_(config.visual, requireCamera(calibration)) {}
@@ -27,7 +28,7 @@ void VisualWorker::addScan(std::shared_ptr<const LidarScan> scan) {
   if (recent_scans_.size() > 2) recent_scans_.erase(recent_scans_.begin());
 }
 
-std::vector<fusion::ImageSegment> VisualWorker::track(const ImageFrame& image) {
+VisualFrameFeatures VisualWorker::track(const ImageFrame& image) {
   VisualFrameRecord record;
   record.t = image.timestamp;
   // With a LiDAR every frame is told its hints, none before the first scan,
@@ -41,16 +42,18 @@ std::vector<fusion::ImageSegment> VisualWorker::track(const ImageFrame& image) {
   record.result = slam_.track(image);
   record.track_ms = watch.ms();
   frames_.push_back(std::move(record));
-  std::vector<fusion::ImageSegment> segments;
-  for (const visual::ImageLineSegment& s : slam_.lineSegments()) segments.push_back({s.start, s.end});
-  return segments;
+  VisualFrameFeatures features;
+  for (const visual::ImageLineSegment& s : slam_.lineSegments()) features.segments.push_back({s.start, s.end});
+  if (use_keypoint_depths_ && slam_.currentIsKeyframe()) features.keyframe_keypoints = slam_.keypointPixels();
+  return features;
 }
 
-void VisualWorker::applyFusion(const fusion::FusionResult& fusion) {
-  if (!use_fusion_lines_ || frames_.empty() || !frames_.back().result.pose_valid) return;
+void VisualWorker::applyFusion(const FusionAnswer& answer) {
+  if (frames_.empty() || !frames_.back().result.pose_valid) return;
   const Stopwatch watch;
+  if (!answer.keypoint_depths.empty()) slam_.setKeypointDepths(answer.keypoint_depths);
   int added = 0;
-  for (const fusion::FusionLine& line : fusion.lines) {
+  for (const fusion::FusionLine& line : use_fusion_lines_ ? answer.result.lines : std::vector<fusion::FusionLine>{}) {
     const int id = slam_.addFusionLine(static_cast<int>(line.segment_index), line.A, line.B, line.direction);
     added += id >= 0 ? 1 : 0;
   }

@@ -22,10 +22,10 @@ class VisualWorker {
 
   // Raw scans, kept (the last two) for the depth hints of the next images.
   void addScan(std::shared_ptr<const LidarScan> scan);
-  // Tracks the next camera frame; returns its line segments for the fusion framework.
-  std::vector<fusion::ImageSegment> track(const ImageFrame& image);
+  // Tracks the next camera frame; returns its features for the fusion framework.
+  VisualFrameFeatures track(const ImageFrame& image);
   // The fusion framework's answer for the frame just tracked.
-  void applyFusion(const fusion::FusionResult& fusion);
+  void applyFusion(const FusionAnswer& answer);
 
   const std::vector<VisualFrameRecord>& frames() const { return frames_; }
   const visual::VisualSlam& slam() const { return slam_; }
@@ -33,6 +33,7 @@ class VisualWorker {
  private:
   Calibration calibration_;
   bool use_fusion_lines_;
+  bool use_keypoint_depths_;
   double hint_max_dt_;
   bool has_lidar_;
   visual::VisualSlam slam_;
