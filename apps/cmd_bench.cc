@@ -186,7 +186,7 @@ int runBench(const BenchArgs& args, const std::string& command) {
   for (const auto& [name, dir] : sequences) {
     system::BenchRow row{name, {}};
     for (const Column& c : cols) {
-      std::cout << fmt::format("{:<16} {:<24}", name, c.name) << std::flush;
+      std::cout << fmt::format("{:<16} {:<27}", name, c.name) << std::flush;
       // Sequences without the sensors of a mode are skipped by `run` with an error: shown as fail.
       row.cells[c.name] = runCell(dir, c, config, work / "runs" / name / c.name);
       std::cout << system::accuracyCellText(row.cells[c.name]) << "\n";
