@@ -75,15 +75,13 @@ std::vector<SuiteSequence> simulatedSuite(double duration) {
   return suite;
 }
 
-// Simulated once per duration; renamed into place only when complete.
+// Simulated once per duration.
 std::string ensureSimulated(const SuiteSequence& s, const fs::path& cache) {
   const fs::path dir = cache / fmt::format("{}-{:g}s", s.name, s.options.duration);
-  if (fs::exists(dir / "sequence.yaml")) return dir.string();
-  std::cout << "simulating " << s.name << " (" << s.options.duration << " s) into " << dir.string() << "\n" << std::flush;
-  const fs::path partial = dir.string() + ".partial";
-  fs::remove_all(partial);
-  sim::simulateSequence(s.options, partial.string());
-  fs::rename(partial, dir);
+  sim::simulateSequenceOnce(s.options, dir.string(), [&] {
+    std::cout << "simulating " << s.name << " (" << s.options.duration << " s) into " << dir.string() << "\n"
+              << std::flush;
+  });
   return dir.string();
 }
 

@@ -3,7 +3,6 @@
 // trajectory.tum, stats.json, map.ply and lines.ply and, when there is
 // ground truth, prints the accuracy.
 #include <chrono>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -44,21 +43,17 @@ std::string modeFor(const RunArgs& args, const SensorSource& source) {
 }
 
 // The built-in default input: a simulated room sequence, generated once into
-// a folder beside the outputs (renamed into place only when complete, so an
-// interrupted run never leaves a half sequence that looks whole).
+// a folder beside the outputs.
 std::string defaultSequence() {
-  const std::filesystem::path dir = "out/default-room";
-  if (std::filesystem::exists(dir / "sequence.yaml")) return dir.string();
+  const std::string dir = "out/default-room";
   sim::SimOptions options;
   options.scenario = "room";
   options.duration = 30.0;
-  std::cout << "no --sequence or --bag given: simulating the built-in default, a " << options.duration
-            << " s room sequence, into " << dir.string() << " (once)\n";
-  const std::filesystem::path partial = dir.string() + ".partial";
-  std::filesystem::remove_all(partial);
-  sim::simulateSequence(options, partial.string());
-  std::filesystem::rename(partial, dir);
-  return dir.string();
+  sim::simulateSequenceOnce(options, dir, [&] {
+    std::cout << "no --sequence or --bag given: simulating the built-in default, a " << options.duration
+              << " s room sequence, into " << dir << " (once)\n";
+  });
+  return dir;
 }
 
 system::SystemConfig loadConfig(const RunArgs& args) {

@@ -38,13 +38,7 @@ std::string cachedSimulation(const std::string& name, const sim::SimOptions& opt
   fs::create_directories(cache);
   const fs::path done = cache / name;
   const FileLock lock((cache / (name + ".lock")).string());
-  if (fs::exists(done / "sequence.yaml")) return done.string();
-  // Left over by a run that died half-way: start again.
-  const fs::path partial = cache / (name + ".partial");
-  fs::remove_all(partial);
-  fs::remove_all(done);
-  sim::simulateSequence(options, partial.string());
-  fs::rename(partial, done);
+  sim::simulateSequenceOnce(options, done.string());
   return done.string();
 }
 

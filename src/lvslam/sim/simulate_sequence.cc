@@ -75,6 +75,20 @@ Eigen::Isometry3d perturbExtrinsics(const Eigen::Isometry3d& T_camera_lidar, con
                   T_camera_lidar.translation() + error.translation_m * direction);
 }
 
+bool simulateSequenceOnce(const SimOptions& options, const std::string& out_dir,
+                          const std::function<void()>& announce) {
+  namespace fs = std::filesystem;
+  const fs::path dir(out_dir);
+  if (fs::exists(dir / "sequence.yaml")) return false;
+  if (announce) announce();
+  const fs::path partial = dir.string() + ".partial";
+  fs::remove_all(partial);
+  fs::remove_all(dir);
+  simulateSequence(options, partial.string());
+  fs::rename(partial, dir);
+  return true;
+}
+
 SimulationSummary simulateSequence(const SimOptions& options, const std::string& out_dir) {
   const Scenario scenario = makeScenario(options);
   const Eigen::Isometry3d truth = scenario.rig.T_camera_lidar();

@@ -1,6 +1,7 @@
 #pragma once
 // Writes a whole simulated sequence folder (docs/sequence-format.md, details
 // in docs/simulator.md), streaming: one image or scan in memory at a time.
+#include <functional>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -18,6 +19,14 @@ struct SimulationSummary {
 // Throws lvslam::Error naming the option on invalid options, or the file
 // that cannot be written.
 SimulationSummary simulateSequence(const SimOptions& options, const std::string& out_dir);
+
+// The sequence in out_dir, simulated only when out_dir has no
+// sequence.yaml: written into "<out_dir>.partial" and renamed when complete,
+// so an interrupted run never leaves a half sequence that looks whole (a
+// leftover partial or incomplete out_dir is removed first). `announce` is
+// called just before a simulation starts. Returns whether it simulated.
+bool simulateSequenceOnce(const SimOptions& options, const std::string& out_dir,
+                          const std::function<void()>& announce = {});
 
 // T_camera_lidar with the requested error: R' = R_err R, t' = t + t_err, the
 // rotation error `rotation_deg` about an axis and the offset

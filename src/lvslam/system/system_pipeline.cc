@@ -231,7 +231,7 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
         const double t = image.timestamp;
         // The fusion framework needs both subsystems of this frame.
         const ExchangePtr exchange =
-            workers.lidar && workers.visual && !config.deterministic ? std::make_shared<FrameExchange>() : nullptr;
+            workers.lidar && workers.visual && threaded ? std::make_shared<FrameExchange>() : nullptr;
         if (workers.visual && !threaded) {
           const VisualFrameFeatures features = workers.visual->track(image);
           if (workers.lidar) workers.visual->applyFusion(workers.lidar->addFrame(t, features));

@@ -53,10 +53,9 @@ void VisualWorker::applyFusion(const FusionAnswer& answer) {
   const Stopwatch watch;
   if (!answer.keypoint_depths.empty()) slam_.setKeypointDepths(answer.keypoint_depths);
   int added = 0;
-  for (const fusion::FusionLine& line : use_fusion_lines_ ? answer.result.lines : std::vector<fusion::FusionLine>{}) {
-    const int id = slam_.addFusionLine(static_cast<int>(line.segment_index), line.A, line.B, line.direction);
-    added += id >= 0 ? 1 : 0;
-  }
+  if (use_fusion_lines_)
+    for (const fusion::FusionLine& line : answer.result.lines)
+      added += slam_.addFusionLine(static_cast<int>(line.segment_index), line.A, line.B, line.direction) >= 0 ? 1 : 0;
   frames_.back().fusion_lines_added = added;
   frames_.back().fusion_apply_ms = watch.ms();
 }

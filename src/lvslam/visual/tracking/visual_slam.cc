@@ -23,6 +23,18 @@ const char* trackingStateName(TrackingState state) {
 
 namespace {
 
+// The landmark ids a frame's feature table observes (-1: none), in feature order.
+std::vector<int> observedLandmarks(const std::vector<int>& table) {
+  std::vector<int> ids;
+  for (const int id : table)
+    if (id >= 0) ids.push_back(id);
+  return ids;
+}
+
+double inlierRatio(int point_inliers, int line_inliers, int matches) {
+  return static_cast<double>(point_inliers + line_inliers) / std::max(1, matches);
+}
+
 FrameTrackerConfig trackerConfig(const VisualSlamConfig& c) {
   FrameTrackerConfig t;
   t.search_radius_px = c.search_radius_px;
@@ -198,9 +210,7 @@ void VisualSlam::Impl::initialize(const std::vector<PixelDepth>& hints, VisualFr
   const int frames = std::max(1, frame_index - reference_frame);
   velocity = expSE3(logSE3(k2.T_camera_world) / frames);
   T_last = k2.T_camera_world;
-  last_points.clear();
-  for (const int id : k2.point_landmark)
-    if (id >= 0) last_points.push_back(id);
+  last_points = observedLandmarks(k2.point_landmark);
   reference_keyframe = built->keyframe2;
   last_keyframe_frame = frame_index;
   reference.reset();
@@ -231,15 +241,10 @@ bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
   if (!tracked.success)  // fall back: no motion, wider window
     tracked = trackLocalMap(map, local, T_last, K, config.recovery_radius_scale, tracker, current);
   if (!tracked.success) return false;
-  result.inlier_ratio =
-      static_cast<double>(current.point_inliers + current.line_inliers) / std::max(1, tracked.matches);
-  std::vector<int> found_points, found_lines;
-  for (const int id : current.point_landmark)
-    if (id >= 0) found_points.push_back(id);
-  for (const int id : current.line_landmark)
-    if (id >= 0) found_lines.push_back(id);
-  mapper.countTracking(tracked.visible_points, found_points, tracked.visible_lines, found_lines);
-  last_points = found_points;
+  result.inlier_ratio = inlierRatio(current.point_inliers, current.line_inliers, tracked.matches);
+  last_points = observedLandmarks(current.point_landmark);
+  mapper.countTracking(tracked.visible_points, last_points, tracked.visible_lines,
+                       observedLandmarks(current.line_landmark));
   velocity = current.T_camera_world * T_last.inverse();
   T_last = current.T_camera_world;
   current_has_pose = true;
@@ -329,11 +334,8 @@ bool VisualSlam::Impl::relocalize(VisualFrameResult& result) {
     T_last = current.T_camera_world;
     current_has_pose = true;
     lost_frames = 0;
-    last_points.clear();
-    for (const int id : current.point_landmark)
-      if (id >= 0) last_points.push_back(id);
-    result.inlier_ratio =
-        static_cast<double>(current.point_inliers + current.line_inliers) / std::max(1, tracked.matches);
+    last_points = observedLandmarks(current.point_landmark);
+    result.inlier_ratio = inlierRatio(current.point_inliers, current.line_inliers, tracked.matches);
     return true;
   }
   current.point_inliers = current.line_inliers = 0;
