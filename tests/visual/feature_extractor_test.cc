@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 #include <opencv2/imgproc.hpp>
 
 #include "lvslam/core/error.h"
@@ -180,6 +181,32 @@ TEST(FeatureExtractor, RejectsBadImagesAndConfigs) {
   bad.lines.descriptor_octave = -1;
   EXPECT_THROW(FeatureExtractor(bad, vgaCamera()), Error);
   EXPECT_THROW(FeatureExtractor(FeatureExtractorConfig{}, PinholeCamera()), Error);
+}
+
+// ORB and LSD/LBD run side by side under TBB: the frame must not depend on
+// whether they did (the deterministic mode limits TBB to one thread).
+TEST(FeatureExtractor, SideBySideExtractionEqualsOneThread) {
+  cv::Mat img = testing::texturedImage(640, 480, 5);
+  cv::rectangle(img, cv::Point(100, 80), cv::Point(500, 400), cv::Scalar(255), 4);
+  const ImageFrame frame{2.0, img};
+  FeatureExtractor parallel(FeatureExtractorConfig{}, vgaCamera());
+  const FeatureFrame a = parallel.extract(frame);
+  FeatureFrame b;
+  {
+    const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    FeatureExtractor sequential(FeatureExtractorConfig{}, vgaCamera());
+    b = sequential.extract(frame);
+  }
+  ASSERT_GT(a.keypoints.size(), 500u);
+  ASSERT_FALSE(a.lines.empty());
+  ASSERT_EQ(a.keypoints.size(), b.keypoints.size());
+  ASSERT_EQ(a.lines.size(), b.lines.size());
+  EXPECT_EQ(cv::norm(a.descriptors, b.descriptors, cv::NORM_HAMMING), 0.0);
+  EXPECT_EQ(cv::norm(a.line_descriptors, b.line_descriptors, cv::NORM_HAMMING), 0.0);
+  for (size_t i = 0; i < a.lines.size(); ++i) {
+    EXPECT_EQ(a.lines[i].start, b.lines[i].start);
+    EXPECT_EQ(a.lines[i].end, b.lines[i].end);
+  }
 }
 
 }  // namespace

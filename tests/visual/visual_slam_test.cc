@@ -247,6 +247,34 @@ TEST_F(VisualSlamTest, KeypointDepthsAreStoredOnKeyframesAndMakePoints) {
   EXPECT_GT(non_keyframes, 0);
 }
 
+// The pipeline extracts on another thread and hands the result to track():
+// the same poses as extracting inside track(); features of another camera
+// size are refused.
+TEST_F(VisualSlamTest, TrackingAnExtractedImageEqualsTrackingTheImage) {
+  VisualSlam whole(VisualSlamConfig{}, camera());
+  VisualSlam split(VisualSlamConfig{}, camera());
+  FeatureExtractor extractor(VisualSlamConfig{}.visual.features, camera());
+  int posed = 0;
+  for (size_t i = 0; i < 40 && i < frames_->size(); ++i) {
+    const RenderedFrame& f = (*frames_)[i];
+    if (whole.needsDepthHints()) whole.setDepthHints(depthHints(f.depth));
+    if (split.needsDepthHints()) split.setDepthHints(depthHints(f.depth));
+    const VisualFrameResult a = whole.track(f.image);
+    const VisualFrameResult b = split.track(extractImage(extractor, f.image));
+    ASSERT_EQ(a.pose_valid, b.pose_valid) << "frame " << i;
+    EXPECT_EQ(a.keypoints, b.keypoints);
+    EXPECT_EQ(a.brightness, b.brightness);
+    if (!a.pose_valid) continue;
+    ++posed;
+    EXPECT_TRUE(a.T_world_camera.isApprox(b.T_world_camera, 1e-12)) << "frame " << i;
+  }
+  EXPECT_GE(posed, 15);
+  ExtractedImage foreign;
+  foreign.features.width = camera().width() / 2;
+  foreign.features.height = camera().height() / 2;
+  EXPECT_THROW(split.track(foreign), Error);
+}
+
 TEST(ImageStatisticsTest, BrightnessAndContrastOfKnownImages) {
   cv::Mat half(10, 10, CV_8UC1, cv::Scalar(0));
   half.colRange(5, 10).setTo(200);

@@ -18,6 +18,7 @@ struct VisualFrameRecord {
   double t = 0.0;
   visual::VisualFrameResult result;
   int fusion_lines_added = 0;  // landmarks created or given d_fu
+  double extract_ms = 0.0;  // features, on the extraction thread
   double hints_ms = 0.0, track_ms = 0.0, fusion_apply_ms = 0.0;
 };
 

@@ -60,7 +60,7 @@ std::string frameJson(const PipelineRecords& records, const SystemOutput& output
                            .str());
   if (timings) {
     JsonObject t;
-    if (v) t.addNumber("depth_hints", v->hints_ms).addNumber("visual", v->track_ms);
+    if (v) t.addNumber("extraction", v->extract_ms).addNumber("depth_hints", v->hints_ms).addNumber("visual", v->track_ms);
     if (l && v) t.addNumber("fusion", l->fusion_ms).addNumber("fusion_lines_to_visual", v->fusion_apply_ms);
     o.addRaw("time_ms", t.str());
   }

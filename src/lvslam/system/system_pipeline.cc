@@ -11,6 +11,7 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/system/bounded_queue.h"
+#include "lvslam/system/stopwatch.h"
 #include "lvslam/system/lidar_worker.h"
 #include "lvslam/system/visual_worker.h"
 
@@ -20,10 +21,12 @@ namespace {
 
 using ScanPtr = std::shared_ptr<const LidarScan>;
 
-// The subsystems a mode runs (each absent when not needed).
+// The subsystems a mode runs (each absent when not needed), and the visual
+// front end's extractor, run by its own thread ahead of the visual subsystem.
 struct Workers {
   std::unique_ptr<LidarWorker> lidar;
   std::unique_ptr<VisualWorker> visual;
+  std::unique_ptr<visual::FeatureExtractor> extractor;
 };
 
 Workers makeWorkers(const SensorSource& source, const SystemConfig& config) {
@@ -35,7 +38,10 @@ Workers makeWorkers(const SensorSource& source, const SystemConfig& config) {
   Workers workers;
   const Calibration calibration = source.calibration();
   if (want_lidar) workers.lidar = std::make_unique<LidarWorker>(config, calibration);
-  if (want_visual) workers.visual = std::make_unique<VisualWorker>(config, calibration, source.hasLidar());
+  if (want_visual) {
+    workers.visual = std::make_unique<VisualWorker>(config, calibration, source.hasLidar());
+    workers.extractor = std::make_unique<visual::FeatureExtractor>(config.visual.visual.features, *calibration.camera);
+  }
   return workers;
 }
 
@@ -62,11 +68,19 @@ struct LidarFrameJob {
   double t = 0.0;
   ExchangePtr exchange;  // null in lidar mode (no segments)
 };
-struct VisualFrameJob {
+struct ImageJob {
   ImageFrame image;
   ExchangePtr exchange;  // null in visual mode (no fusion)
 };
+struct VisualFrameJob {
+  visual::ExtractedImage image;
+  double extract_ms = 0.0;
+  ExchangePtr exchange;
+};
 using LidarJob = std::variant<ScanPtr, LidarFrameJob>;
+// Scans pass the extraction thread unchanged, so that the visual thread sees
+// scans and frames in reading order (its depth hints come from the scans).
+using ExtractionJob = std::variant<ScanPtr, ImageJob>;
 using VisualJob = std::variant<ScanPtr, VisualFrameJob>;
 
 // The first failure of any thread; the others then stop processing.
@@ -101,11 +115,24 @@ void runLidarJob(LidarWorker& worker, LidarJob& job) {
   }
 }
 
+VisualJob extract(visual::FeatureExtractor& extractor, ExtractionJob& job) {
+  if (auto* scan = std::get_if<ScanPtr>(&job)) return *scan;
+  auto& frame = std::get<ImageJob>(job);
+  try {
+    const Stopwatch watch;
+    visual::ExtractedImage image = visual::extractImage(extractor, frame.image);
+    return VisualFrameJob{std::move(image), watch.ms(), frame.exchange};
+  } catch (...) {
+    if (frame.exchange) failPromise(frame.exchange->segments, std::current_exception());
+    throw;
+  }
+}
+
 void runVisualJob(VisualWorker& worker, VisualJob& job) {
   if (auto* scan = std::get_if<ScanPtr>(&job)) return worker.addScan(*scan);
   auto& frame = std::get<VisualFrameJob>(job);
   try {
-    VisualFrameFeatures features = worker.track(frame.image);
+    VisualFrameFeatures features = worker.track(std::move(frame.image), frame.extract_ms);
     if (!frame.exchange) return;
     frame.exchange->segments.set_value(std::move(features));
     worker.applyFusion(frame.exchange->fusion_future.get());
@@ -123,6 +150,10 @@ void abandon(LidarJob& job, std::exception_ptr error) {
 }
 void abandon(VisualJob& job, std::exception_ptr error) {
   if (auto* frame = std::get_if<VisualFrameJob>(&job); frame && frame->exchange)
+    failPromise(frame->exchange->segments, error);
+}
+void abandon(ExtractionJob& job, std::exception_ptr error) {
+  if (auto* frame = std::get_if<ImageJob>(&job); frame && frame->exchange)
     failPromise(frame->exchange->segments, error);
 }
 
@@ -174,15 +205,17 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
   if (config.deterministic) one_thread.emplace(tbb::global_control::max_allowed_parallelism, 1);
 
   BoundedQueue<LidarJob> lidar_queue(8);
+  BoundedQueue<ExtractionJob> extraction_queue(4);
   BoundedQueue<VisualJob> visual_queue(4);
   Failure failure;
   const auto close_all = [&] {
     lidar_queue.close();
+    extraction_queue.close();
     visual_queue.close();
   };
   // Deterministic: the same jobs, run in reading order on this thread.
   const bool threaded = !config.deterministic;
-  std::thread lidar_thread, visual_thread;
+  std::thread lidar_thread, extraction_thread, visual_thread;
   if (threaded && workers.lidar)
     lidar_thread = std::thread([&] {
       workerLoop(lidar_queue, failure, [&](LidarJob& job) { runLidarJob(*workers.lidar, job); }, close_all);
@@ -194,19 +227,32 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
         }
       }
     });
-  if (threaded && workers.visual)
+  if (threaded && workers.visual) {
+    // Extraction is stateless: frame k+1 is extracted while frame k is tracked.
+    extraction_thread = std::thread([&] {
+      workerLoop(
+          extraction_queue, failure,
+          [&](ExtractionJob& job) {
+            VisualJob next = extract(*workers.extractor, job);
+            if (!visual_queue.push(std::move(next))) abandon(next, failure.first());
+          },
+          close_all);
+      visual_queue.close();  // after the last frame: the visual thread drains and ends
+    });
     visual_thread = std::thread([&] {
       workerLoop(visual_queue, failure, [&](VisualJob& job) { runVisualJob(*workers.visual, job); }, close_all);
     });
+  }
 
   const auto toLidar = [&](LidarJob job) {
     if (threaded) return lidar_queue.push(std::move(job));
     runLidarJob(*workers.lidar, job);
     return true;
   };
-  const auto toVisual = [&](VisualJob job) {
-    if (threaded) return visual_queue.push(std::move(job));
-    runVisualJob(*workers.visual, job);
+  const auto toVisual = [&](ExtractionJob job) {
+    if (threaded) return extraction_queue.push(std::move(job));
+    VisualJob extracted = extract(*workers.extractor, job);
+    runVisualJob(*workers.visual, extracted);
     return true;
   };
 
@@ -233,10 +279,12 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
         const ExchangePtr exchange =
             workers.lidar && workers.visual && threaded ? std::make_shared<FrameExchange>() : nullptr;
         if (workers.visual && !threaded) {
-          const VisualFrameFeatures features = workers.visual->track(image);
+          const Stopwatch watch;
+          visual::ExtractedImage extracted = visual::extractImage(*workers.extractor, image);
+          const VisualFrameFeatures features = workers.visual->track(std::move(extracted), watch.ms());
           if (workers.lidar) workers.visual->applyFusion(workers.lidar->addFrame(t, features));
         } else {
-          if (workers.visual) ok = toVisual(VisualFrameJob{std::move(image), exchange});
+          if (workers.visual) ok = toVisual(ImageJob{std::move(image), exchange});
           if (ok && workers.lidar) ok = toLidar(LidarFrameJob{t, exchange});
           // Refused after a failure: the visual thread may already wait for this fusion answer.
           if (!ok && exchange) failPromise(exchange->fusion, failure.first());
@@ -250,8 +298,13 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
     reading_error = std::current_exception();
     failure.record(reading_error);
   }
-  close_all();
+  // The LiDAR and extraction queues end here; the visual queue when the
+  // extraction thread has handed over its last frame.
+  lidar_queue.close();
+  extraction_queue.close();
   if (lidar_thread.joinable()) lidar_thread.join();
+  if (extraction_thread.joinable()) extraction_thread.join();
+  visual_queue.close();
   if (visual_thread.joinable()) visual_thread.join();
   if (reading_error) std::rethrow_exception(reading_error);
   if (failure.first()) std::rethrow_exception(failure.first());

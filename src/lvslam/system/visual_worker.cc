@@ -28,9 +28,10 @@ void VisualWorker::addScan(std::shared_ptr<const LidarScan> scan) {
   if (recent_scans_.size() > 2) recent_scans_.erase(recent_scans_.begin());
 }
 
-VisualFrameFeatures VisualWorker::track(const ImageFrame& image) {
+VisualFrameFeatures VisualWorker::track(visual::ExtractedImage image, double extract_ms) {
   VisualFrameRecord record;
   record.t = image.timestamp;
+  record.extract_ms = extract_ms;
   // With a LiDAR every frame is told its hints, none before the first scan,
   // so that the visual subsystem never starts a map without metric depth.
   if (slam_.needsDepthHints() && has_lidar_) {
@@ -39,7 +40,7 @@ VisualFrameFeatures VisualWorker::track(const ImageFrame& image) {
     record.hints_ms = watch.ms();
   }
   const Stopwatch watch;
-  record.result = slam_.track(image);
+  record.result = slam_.track(std::move(image));
   record.track_ms = watch.ms();
   frames_.push_back(std::move(record));
   VisualFrameFeatures features;

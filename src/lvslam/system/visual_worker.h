@@ -22,8 +22,9 @@ class VisualWorker {
 
   // Raw scans, kept (the last two) for the depth hints of the next images.
   void addScan(std::shared_ptr<const LidarScan> scan);
-  // Tracks the next camera frame; returns its features for the fusion framework.
-  VisualFrameFeatures track(const ImageFrame& image);
+  // Tracks the next camera frame, extracted (extractImage) in extract_ms;
+  // returns its features for the fusion framework.
+  VisualFrameFeatures track(visual::ExtractedImage image, double extract_ms);
   // The fusion framework's answer for the frame just tracked.
   void applyFusion(const FusionAnswer& answer);
 

@@ -3,6 +3,7 @@
 #include <string>
 
 #include <opencv2/imgproc.hpp>
+#include <tbb/parallel_invoke.h>
 
 #include "lvslam/core/error.h"
 
@@ -38,32 +39,33 @@ FeatureFrame FeatureExtractor::extract(const ImageFrame& frame) {
   out.width = image.cols;
   out.height = image.rows;
   out.pyramid = orb_.pyramid();
-  orb_.extract(gray_, out.keypoints, out.descriptors);
+  // ORB and LSD/LBD read the same gray image and share nothing else: they run
+  // side by side (one after the other when TBB is limited to one thread).
+  std::vector<RawSegment> segments;
+  tbb::parallel_invoke([&] { orb_.extract(gray_, out.keypoints, out.descriptors); },
+                       [&] {
+                         if (lines_) lines_->extract(gray_, segments, out.line_descriptors);
+                       });
   out.points.reserve(out.keypoints.size());
   const bool distorted = camera_.isDistorted();
   for (const cv::KeyPoint& kp : out.keypoints) {
     const Eigen::Vector2d px(kp.pt.x, kp.pt.y);
     out.points.push_back(distorted ? camera_.undistortPoint(px) : px);
   }
-
-  if (lines_) {
-    std::vector<RawSegment> segments;
-    lines_->extract(gray_, segments, out.line_descriptors);
-    out.lines.reserve(segments.size());
-    for (const RawSegment& s : segments) {
-      // Endpoints undistorted; the segment between them is taken as straight
-      // (exact without distortion, a small approximation with mild radtan).
-      LineSegment seg;
-      seg.start = Eigen::Vector2d(s.start.x, s.start.y);
-      seg.end = Eigen::Vector2d(s.end.x, s.end.y);
-      if (distorted) {
-        seg.start = camera_.undistortPoint(seg.start);
-        seg.end = camera_.undistortPoint(seg.end);
-      }
-      seg.coefficients = lineCoefficients(seg.start, seg.end);
-      seg.length = (seg.end - seg.start).norm();
-      out.lines.push_back(seg);
+  out.lines.reserve(segments.size());
+  for (const RawSegment& s : segments) {
+    // Endpoints undistorted; the segment between them is taken as straight
+    // (exact without distortion, a small approximation with mild radtan).
+    LineSegment seg;
+    seg.start = Eigen::Vector2d(s.start.x, s.start.y);
+    seg.end = Eigen::Vector2d(s.end.x, s.end.y);
+    if (distorted) {
+      seg.start = camera_.undistortPoint(seg.start);
+      seg.end = camera_.undistortPoint(seg.end);
     }
+    seg.coefficients = lineCoefficients(seg.start, seg.end);
+    seg.length = (seg.end - seg.start).norm();
+    out.lines.push_back(seg);
   }
   return out;
 }

@@ -111,7 +111,7 @@ struct VisualSlam::Impl {
   std::vector<FusionLineWait> fusion_lines;
   std::vector<int> last_points;  // landmarks the last tracked frame observed
 
-  VisualFrameResult track(const ImageFrame& frame, std::vector<PixelDepth> hints);
+  VisualFrameResult track(ExtractedImage image, std::vector<PixelDepth> hints);
   void initialize(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
   void setReference(const std::vector<PixelDepth>& hints);
   bool trackFrame(VisualFrameResult& result);
@@ -124,18 +124,17 @@ struct VisualSlam::Impl {
   std::vector<int> pendingFusionLines();
 };
 
-VisualFrameResult VisualSlam::Impl::track(const ImageFrame& frame, std::vector<PixelDepth> hints) {
+VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<PixelDepth> hints) {
   ++frame_index;
   current_has_pose = false;
   current_keyframe = -1;
   VisualFrameResult result;
-  result.timestamp = frame.timestamp;
-  const ImageStatistics stats = imageStatistics(frame.image);
+  result.timestamp = image.timestamp;
+  const ImageStatistics stats = image.stats;
   result.brightness = stats.brightness;
   result.contrast = stats.contrast;
   current = TrackedFrame{};
-  current.features = extractor.extract(frame);  // throws on a wrong image
-  current.features.timestamp = frame.timestamp;
+  current.features = std::move(image.features);
   result.keypoints = static_cast<int>(current.features.points.size());
   result.segments = static_cast<int>(current.features.lines.size());
   const bool usable = isUsable(stats, config.usability) && result.keypoints >= config.min_keypoints;
@@ -358,11 +357,21 @@ VisualSlam::VisualSlam(const VisualSlamConfig& config, const PinholeCamera& came
 VisualSlam::~VisualSlam() = default;
 
 VisualFrameResult VisualSlam::track(const ImageFrame& frame) {
+  return track(extractImage(impl_->extractor, frame));
+}
+
+VisualFrameResult VisualSlam::track(ExtractedImage image) {
+  const PinholeCamera& cam = impl_->camera;
+  if (image.features.width != cam.width() || image.features.height != cam.height()) {
+    throw Error("VisualSlam::track", "features of a " + std::to_string(image.features.width) + "x" +
+                                         std::to_string(image.features.height) + " image, camera is " +
+                                         std::to_string(cam.width()) + "x" + std::to_string(cam.height()));
+  }
   std::vector<PixelDepth> hints;
   hints.swap(impl_->next_hints);
   impl_->hints_given = impl_->next_hints_given;
   impl_->next_hints_given = false;
-  return impl_->track(frame, std::move(hints));
+  return impl_->track(std::move(image), std::move(hints));
 }
 
 void VisualSlam::setDepthHints(std::vector<PixelDepth> hints) {

@@ -22,6 +22,7 @@
 #include "lvslam/visual/module/line_depth_check.h"
 #include "lvslam/visual/module/map_culling.h"
 #include "lvslam/visual/module/point_triangulation.h"
+#include "lvslam/visual/tracking/extracted_image.h"
 #include "lvslam/visual/tracking/image_statistics.h"
 #include "lvslam/visual/tracking/local_keyframes.h"
 #include "lvslam/visual/tracking/map_initialization.h"
@@ -100,6 +101,9 @@ class VisualSlam {
 
   // Throws lvslam::Error on an image of the wrong size or type.
   VisualFrameResult track(const ImageFrame& frame);
+  // The same for an image extracted elsewhere (extractImage with an extractor
+  // built from config.visual.features and this camera).
+  VisualFrameResult track(ExtractedImage image);
 
   // Hints for the next frame given to track(); used when that frame becomes
   // the first view of a map. Non-finite or non-positive depths are ignored.
