@@ -1,5 +1,6 @@
 #include "lvslam/visual/optimize/bundle_adjustment.h"
 
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -27,7 +28,7 @@ Truth makeProblem(double pixel_noise, double outlier_fraction, unsigned seed) {
   std::mt19937 rng(seed + 1);
   std::normal_distribution<double> noise(0.0, pixel_noise);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (size_t k = 0; k < s.T_camera_world.size(); ++k) p.keyframes.push_back({s.T_camera_world[k], k < 2});
+  for (size_t k = 0; k < s.T_camera_world.size(); ++k) p.keyframes.push_back({s.T_camera_world[k], k < 2, std::nullopt});
   for (const auto& pt : s.points) p.points.push_back({pt, false});
   for (const auto& seg : s.segments) p.lines.push_back({testing::lineOf(seg), std::nullopt, false});
   for (size_t k = 0; k < s.T_camera_world.size(); ++k) {
@@ -146,7 +147,7 @@ TEST(BundleAdjustment, FusionDirectionConstrainsAPoorlyTriangulatedLine) {
     for (int k = 0; k < 2; ++k) {
       Eigen::Isometry3d T_w_c = Eigen::Isometry3d::Identity();
       T_w_c.translation() = Eigen::Vector3d(0.02 * k, 0.0, 0.0);
-      p.keyframes.push_back({T_w_c.inverse(), true});
+      p.keyframes.push_back({T_w_c.inverse(), true, std::nullopt});
     }
     p.lines.push_back({OrthonormalLine::fromPlucker(truth).plus(Eigen::Vector4d(0.05, -0.08, 0.06, 0.1)).toPlucker(),
                        truth.d, false});
@@ -169,6 +170,29 @@ TEST(BundleAdjustment, FusionDirectionConstrainsAPoorlyTriangulatedLine) {
   EXPECT_GT(without, 0.01);
   EXPECT_LT(with, 0.02 * without);
   EXPECT_LT(with, 1.0 * M_PI / 180.0);
+}
+
+// With no keyframe fixed, the LiDAR pose priors alone hold the gauge: exact
+// priors and observations bring every keyframe and point back to the truth
+// in absolute terms, which images alone cannot (any rigid motion of the
+// whole scene fits them equally).
+TEST(BundleAdjustment, PosePriorsHoldTheGaugeWithoutFixedKeyframes) {
+  Truth t = makeProblem(0.0, 0.0, 21);
+  for (size_t k = 0; k < t.problem.keyframes.size(); ++k) {
+    t.problem.keyframes[k].fixed = false;
+    t.problem.keyframes[k].prior_T_camera_world = t.scene.T_camera_world[k];
+  }
+  perturb(t.problem, 22);
+  EXPECT_GT(errors(t.problem, t.scene).max_translation, 0.02);
+  const BundleAdjustmentResult r = runBundleAdjustment(t.problem);
+  ASSERT_TRUE(r.usable);
+  const Errors after = errors(t.problem, t.scene);
+  EXPECT_LT(after.max_translation, 1e-5);
+  EXPECT_LT(after.max_rotation, 1e-6);
+  EXPECT_LT(after.max_point, 1e-4);
+  // A prior that is not a rigid transform is refused.
+  t.problem.keyframes[1].prior_T_camera_world->matrix()(0, 0) = std::nan("");
+  EXPECT_THROW(runBundleAdjustment(t.problem), Error);
 }
 
 TEST(BundleAdjustment, RejectsBadIndicesAndHandlesEmptyProblems) {

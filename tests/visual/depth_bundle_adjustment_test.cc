@@ -36,7 +36,7 @@ ScaleCase makeScaledWindow(double scale, unsigned seed) {
   for (size_t k = 0; k < s.T_camera_world.size(); ++k) {
     Eigen::Isometry3d T_w_c = s.T_camera_world[k].inverse();
     T_w_c.translation() = c0 + scale * (T_w_c.translation() - c0);
-    p.keyframes.push_back({T_w_c.inverse(), k == 0});
+    p.keyframes.push_back({T_w_c.inverse(), k == 0, std::nullopt});
   }
   for (const Eigen::Vector3d& pt : s.points) p.points.push_back({c0 + scale * (pt - c0), false});
   for (size_t k = 0; k < s.T_camera_world.size(); ++k) {

@@ -12,6 +12,7 @@
 #include "lvslam/visual/residuals/orthonormal_line_manifold.h"
 #include "lvslam/visual/residuals/point_depth.h"
 #include "lvslam/visual/residuals/point_reprojection.h"
+#include "lvslam/visual/residuals/pose_prior.h"
 #include "lvslam/visual/residuals/se3_manifold.h"
 
 namespace lvslam::visual {
@@ -177,6 +178,38 @@ TEST(PointDepthCost, WhitenedDepthErrorAndJacobiansMatch) {
   std::vector<double> point_behind(behind.data(), behind.data() + 3);
   const double* params_behind[] = {pose.data(), point_behind.data()};
   EXPECT_FALSE(exact.Evaluate(params_behind, &r, nullptr));
+}
+
+TEST(PosePriorCost, ZeroAtThePriorWhitenedErrorsAndJacobiansMatch) {
+  const Eigen::Isometry3d T = somePose();
+  std::vector<double> pose = poseVector(T);
+  const double* params[] = {pose.data()};
+  Eigen::Matrix<double, 6, 1> r;
+  const PosePriorCost exact(T, 0.01, 0.005);
+  ASSERT_TRUE(exact.Evaluate(params, r.data(), nullptr));
+  EXPECT_LT(r.norm(), 1e-9);
+  // The prior's camera centre 3 cm off along the world x axis, its rotation
+  // 0.01 rad off about the camera's y axis: residual (-3, 0, 0, 0, -2, 0).
+  const Eigen::Isometry3d centre_shift(Eigen::Translation3d(0.03, 0.0, 0.0));
+  Eigen::Isometry3d prior = T * centre_shift.inverse();  // T_cw * T_world_world'
+  Eigen::Isometry3d rot = Eigen::Isometry3d::Identity();
+  rot.linear() = expSO3(Eigen::Vector3d(0.0, 0.01, 0.0));
+  prior = rot * prior;  // rotate about the camera's own y axis
+  const PosePriorCost off(prior, 0.01, 0.005);
+  ASSERT_TRUE(off.Evaluate(params, r.data(), nullptr));
+  EXPECT_NEAR(r[0], -3.0, 1e-6);
+  EXPECT_NEAR(r[1], 0.0, 1e-6);
+  EXPECT_NEAR(r[2], 0.0, 1e-6);
+  EXPECT_NEAR(r[3], 0.0, 1e-9);
+  EXPECT_NEAR(r[4], -2.0, 1e-9);
+  EXPECT_NEAR(r[5], 0.0, 1e-9);
+  const Se3LeftManifold pose_m;
+  expectTangentJacobianMatchesNumeric(off, {pose}, {&pose_m}, 1e-6);
+  // Far from the prior (0.8 rad) J_l^-1 is not the identity: still exact.
+  Vector6d xi;
+  xi << 0.5, -0.3, 0.2, 0.4, 0.6, -0.3;
+  const PosePriorCost far(expSE3(xi) * T, 0.02, 0.01);
+  expectTangentJacobianMatchesNumeric(far, {pose}, {&pose_m}, 1e-6);
 }
 
 TEST(LineReprojectionCost, EndpointDistancesAndJacobiansMatch) {

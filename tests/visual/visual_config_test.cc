@@ -45,6 +45,20 @@ TEST(VisualConfig, KeypointDepthSection) {
   EXPECT_THROW(load("visual:\n  keypoint_depths: {sigma: 0.02}\n"), Error);
 }
 
+TEST(VisualConfig, LidarPosePriorSection) {
+  EXPECT_FALSE(load("visual: {}\n").use_lidar_pose_priors);
+  const VisualConfig c =
+      load("visual:\n  lidar_pose_priors: {enabled: true, sigma_m: 0.02, sigma_deg: 0.5, huber_delta: 2.0}\n");
+  EXPECT_TRUE(c.use_lidar_pose_priors);
+  EXPECT_DOUBLE_EQ(c.local_window.ba.prior_sigma_m, 0.02);
+  EXPECT_DOUBLE_EQ(c.local_window.ba.prior_sigma_deg, 0.5);
+  EXPECT_DOUBLE_EQ(c.local_window.ba.prior_huber_delta, 2.0);
+  const std::string bad =
+      lvslam::testing::errorMessageOf([] { load("visual:\n  lidar_pose_priors: {sigma_deg: -1}\n"); });
+  EXPECT_NE(bad.find("lidar_pose_priors"), std::string::npos) << bad;
+  EXPECT_THROW(load("visual:\n  lidar_pose_priors: {sigma: 0.02}\n"), Error);
+}
+
 TEST(VisualConfig, BadValuesAndUnknownKeysNameTheKey) {
   const std::string typo = lvslam::testing::errorMessageOf([] { load("visual:\n  orb: {max_featurs: 10}\n"); });
   EXPECT_NE(typo.find("max_featurs"), std::string::npos) << typo;

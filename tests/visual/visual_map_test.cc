@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/se3.h"
 
 namespace lvslam::visual {
 namespace {
@@ -74,6 +75,35 @@ TEST(VisualMap, FusionDirectionIsStoredUnitAndFlagged) {
   map.setFusionDirection(l, Eigen::Vector3d(2, 0, 0));
   EXPECT_TRUE(map.line(l).fusion_direction->isApprox(Eigen::Vector3d::UnitX()));
   EXPECT_THROW(map.setFusionDirection(l, Eigen::Vector3d::Zero()), Error);
+}
+
+// The first odometry pose aligns the odometry's world with the map; later
+// ones come back as priors moved into the map through that alignment.
+TEST(VisualMap, OdometryPosesBecomePriorsInTheMapFrame) {
+  VisualMap map;
+  Keyframe k0, k1;
+  Vector6d xi0, xi1, xi_odom;
+  xi0 << 0.1, -0.2, 0.3, 0.05, -0.1, 0.2;
+  xi1 << 0.6, -0.1, 0.2, 0.1, 0.3, -0.2;
+  xi_odom << 5.0, -3.0, 1.0, 0.0, 0.0, 1.2;  // the odometry's world: elsewhere, turned
+  k0.T_camera_world = expSE3(xi0);
+  k1.T_camera_world = expSE3(xi1);
+  const int a = map.addKeyframe(k0), b = map.addKeyframe(k1);
+  const Eigen::Isometry3d T_odom_world = expSE3(xi_odom);
+  EXPECT_FALSE(map.odometryPrior(a).has_value());
+  map.setOdometryPose(a, T_odom_world * k0.T_camera_world.inverse());
+  ASSERT_TRUE(map.T_world_odom().has_value());
+  EXPECT_TRUE(map.T_world_odom()->isApprox(T_odom_world.inverse(), 1e-12));
+  EXPECT_TRUE(map.odometryPrior(a)->isApprox(k0.T_camera_world, 1e-12));
+  EXPECT_FALSE(map.odometryPrior(b).has_value());
+  // The odometry sees keyframe b 2 cm off: the prior is that pose in the map.
+  const Eigen::Isometry3d off(Eigen::Translation3d(0.02, 0.0, 0.0));
+  map.setOdometryPose(b, T_odom_world * off * k1.T_camera_world.inverse());
+  EXPECT_TRUE(map.odometryPrior(b)->isApprox((off * k1.T_camera_world.inverse()).inverse(), 1e-12));
+  Eigen::Isometry3d bad = Eigen::Isometry3d::Identity();
+  bad.linear() *= 2.0;
+  EXPECT_THROW(map.setOdometryPose(b, bad), Error);
+  EXPECT_THROW(map.setOdometryPose(99, Eigen::Isometry3d::Identity()), Error);
 }
 
 TEST(VisualMap, RejectsInconsistentObservations) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/se3.h"
 #include "lvslam/eval/evaluate.h"
 #include "lvslam/sim/camera_renderer.h"
 #include "lvslam/sim/scenario.h"
@@ -273,6 +274,50 @@ TEST_F(VisualSlamTest, TrackingAnExtractedImageEqualsTrackingTheImage) {
   foreign.features.width = camera().width() / 2;
   foreign.features.height = camera().height() / 2;
   EXPECT_THROW(split.track(foreign), Error);
+}
+
+// LiDAR poses arrive a few frames late; keyframes at their times take them
+// (the initial pair's first view too), others are dropped; switched off,
+// none is taken.
+TEST_F(VisualSlamTest, LidarPosesReachTheKeyframesOfTheirTimes) {
+  for (const bool enabled : {true, false}) {
+    VisualSlamConfig config;
+    config.visual.use_lidar_pose_priors = enabled;
+    VisualSlam slam(config, camera());
+    Vector6d xi;
+    xi << 2.0, 1.0, 0.0, 0.0, 0.0, 0.7;
+    const Eigen::Isometry3d T_odom_world = expSE3(xi);
+    const size_t lag = 3, n = std::min<size_t>(45, frames_->size());
+    for (size_t i = 0; i < n; ++i) {
+      const RenderedFrame& f = (*frames_)[i];
+      if (slam.needsDepthHints()) slam.setDepthHints(depthHints(f.depth));
+      slam.track(f.image);
+      if (i >= lag) {
+        const RenderedFrame& late = (*frames_)[i - lag];
+        slam.addLidarPose(late.image.timestamp, T_odom_world * late.T_world_camera);
+      }
+    }
+    int with_pose = 0, keyframes = 0;
+    for (const auto& [id, k] : slam.map().keyframes()) {
+      ++keyframes;
+      if (!k.T_odom_camera) continue;
+      ++with_pose;
+      // Truth in, truth out: the prior equals the keyframe pose up to the visual error.
+      const Eigen::Isometry3d prior = *slam.map().odometryPrior(id);
+      EXPECT_LT((prior.inverse().translation() - k.T_camera_world.inverse().translation()).norm(), 0.05);
+    }
+    ASSERT_GT(keyframes, 3);
+    if (enabled) {
+      EXPECT_GE(with_pose, keyframes - 1);  // the newest may still wait for its pose
+      EXPECT_TRUE(slam.map().keyframes().begin()->second.T_odom_camera.has_value());
+    } else {
+      EXPECT_EQ(with_pose, 0);
+    }
+  }
+  VisualSlam slam(VisualSlamConfig{}, camera());
+  Eigen::Isometry3d nan_pose = Eigen::Isometry3d::Identity();
+  nan_pose.translation().x() = std::nan("");
+  EXPECT_THROW(slam.addLidarPose(1.0, nan_pose), Error);
 }
 
 TEST(ImageStatisticsTest, BrightnessAndContrastOfKnownImages) {

@@ -39,6 +39,9 @@ struct VisualFrameFeatures {
 struct FusionAnswer {
   fusion::FusionResult result;
   std::vector<double> keypoint_depths;  // per keyframe keypoint, NaN where none
+  // T_odom_camera of the earlier frames whose LiDAR pose became known since
+  // the previous answer (registered, not lost, scans on both sides).
+  Trajectory lidar_camera_poses;
 };
 
 // The LiDAR thread's view of camera frame `index`.

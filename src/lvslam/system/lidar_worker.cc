@@ -12,6 +12,7 @@ LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibrat
   if (config.mode == RunMode::kFused && calibration.camera) {
     fusion_.emplace(*calibration.camera, calibration.T_camera_lidar, config.fusion);
     fusion_->setLidarFeedback(config.lidar_direction_refinement);
+    T_lidar_camera_ = calibration.T_camera_lidar.inverse();
   }
 }
 
@@ -43,18 +44,19 @@ FusionAnswer LidarWorker::addFrame(double t, const VisualFrameFeatures& features
   }
   frames_waiting_.push_back(frames_.size());
   frames_.push_back(std::move(record));
+  answer.lidar_camera_poses.swap(new_camera_poses_);
   return answer;
 }
 
 void LidarWorker::finish() {
   registerPending();
-  poseWaitingFrames(true);
+  poseWaitingFrames(true, false);
 }
 
 // Frames between two registered scans are interpolated between their poses;
 // at the end, frames after the last scan are extrapolated with the LiDAR
 // subsystem's constant-velocity motion.
-void LidarWorker::poseWaitingFrames(bool extrapolate) {
+void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable) {
   if (scan_trajectory_.empty()) return;
   const StampedPose& last = scan_trajectory_.back();
   std::vector<std::size_t> still_waiting;
@@ -63,6 +65,7 @@ void LidarWorker::poseWaitingFrames(bool extrapolate) {
     if (frame.t <= last.t && scan_trajectory_.size() >= 2) {
       const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
       frame.T_odom_lidar = interpolateAtTime(frame.t, before.t, before.T_world_frame, last.t, last.T_world_frame);
+      if (reliable && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frame.T_odom_lidar * *T_lidar_camera_});
     } else if (frame.t <= last.t || extrapolate) {
       frame.T_odom_lidar = odometry_.poseAt(frame.t);
     } else {
@@ -88,8 +91,11 @@ void LidarWorker::registerPending() {
   scans_.push_back(record);
   if (result.status == lidar::OdometryStatus::kRejected) return;  // the frames wait for the next scan
   scan_trajectory_.push_back({result.timestamp, result.T_world_lidar});
-  if (result.status != lidar::OdometryStatus::kLost) map_.add(odometry_.currentFrame());
-  poseWaitingFrames(false);
+  const bool lost = result.status == lidar::OdometryStatus::kLost;
+  if (!lost) map_.add(odometry_.currentFrame());
+  // A frame between a lost scan and its neighbour has no pose worth a prior.
+  poseWaitingFrames(false, !lost && !previous_scan_lost_);
+  previous_scan_lost_ = lost;
 }
 
 }  // namespace lvslam::system

@@ -5,7 +5,8 @@
 // registered when the next one arrives (or at finish()), after the fusion
 // framework has seen every camera frame of its sweep and refined its linear
 // points. Each camera frame gets the LiDAR pose at its time once the scans
-// before and after it are registered.
+// before and after it are registered; in fused mode that pose, in the camera
+// frame, goes back to the visual side with a later frame's answer.
 #include <optional>
 #include <vector>
 
@@ -39,7 +40,7 @@ class LidarWorker {
 
  private:
   void registerPending();
-  void poseWaitingFrames(bool extrapolate);
+  void poseWaitingFrames(bool extrapolate, bool reliable);
 
   lidar::LidarOdometry odometry_;
   std::optional<fusion::FusionStep> fusion_;
@@ -48,6 +49,9 @@ class LidarWorker {
   bool scan_pending_ = false;
   double pending_prepare_ms_ = 0.0;
   std::vector<std::size_t> frames_waiting_;  // frames whose pose needs the pending scan
+  std::optional<Eigen::Isometry3d> T_lidar_camera_;  // fused mode: camera poses go to the visual side
+  Trajectory new_camera_poses_;                      // for the next answer
+  bool previous_scan_lost_ = false;
   std::vector<ScanRecord> scans_;
   std::vector<LidarFrameRecord> frames_;
   Trajectory scan_trajectory_;

@@ -53,6 +53,7 @@ void VisualWorker::applyFusion(const FusionAnswer& answer) {
   if (frames_.empty() || !frames_.back().result.pose_valid) return;
   const Stopwatch watch;
   if (!answer.keypoint_depths.empty()) slam_.setKeypointDepths(answer.keypoint_depths);
+  for (const StampedPose& pose : answer.lidar_camera_poses) slam_.addLidarPose(pose.t, pose.T_world_frame);
   int added = 0;
   if (use_fusion_lines_)
     for (const fusion::FusionLine& line : answer.result.lines)

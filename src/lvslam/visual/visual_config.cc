@@ -72,7 +72,8 @@ void loadOptimisation(const YamlConfig& n, VisualConfig& c) {
 
 VisualConfig loadVisualConfig(const YamlConfig& section) {
   VisualConfig c;
-  rejectUnknownKeys(section, {"orb", "lines", "pose", "bundle_adjustment", "initializer", "keypoint_depths"});
+  rejectUnknownKeys(section, {"orb", "lines", "pose", "bundle_adjustment", "initializer", "keypoint_depths",
+                             "lidar_pose_priors"});
   loadFeatures(section, c.features);
   loadOptimisation(section, c);
   if (const auto init = section.find("initializer")) {
@@ -89,6 +90,16 @@ VisualConfig loadVisualConfig(const YamlConfig& section) {
     ba.depth_huber_delta = depths->getDouble("huber_delta", ba.depth_huber_delta);
     if (!(ba.depth_sigma_ratio > 0.0) || !(ba.depth_huber_delta > 0.0))
       depths->fail("sigma_ratio and huber_delta must be positive");
+  }
+  if (const auto priors = section.find("lidar_pose_priors")) {
+    rejectUnknownKeys(*priors, {"enabled", "sigma_m", "sigma_deg", "huber_delta"});
+    BundleAdjustmentConfig& ba = c.local_window.ba;
+    c.use_lidar_pose_priors = priors->getBool("enabled", c.use_lidar_pose_priors);
+    ba.prior_sigma_m = priors->getDouble("sigma_m", ba.prior_sigma_m);
+    ba.prior_sigma_deg = priors->getDouble("sigma_deg", ba.prior_sigma_deg);
+    ba.prior_huber_delta = priors->getDouble("huber_delta", ba.prior_huber_delta);
+    if (!(ba.prior_sigma_m > 0.0) || !(ba.prior_sigma_deg > 0.0) || !(ba.prior_huber_delta > 0.0))
+      priors->fail("sigma_m, sigma_deg and huber_delta must be positive");
   }
   // The extractors and the initializer validate the rest when constructed;
   // do it now so a bad file fails at load time, naming the file.

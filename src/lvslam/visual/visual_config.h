@@ -22,6 +22,11 @@ struct VisualConfig {
   // LiDAR depth of keyframe keypoints (VisualSlam::setKeypointDepths) enters
   // local BA as depth residuals (local_window.ba.depth_*); off: ignored.
   bool use_keypoint_depths = true;
+  // The LiDAR odometry's pose of keyframes (VisualSlam::addLidarPose) enters
+  // local BA as pose priors (local_window.ba.prior_*); off: ignored. Off by
+  // default: measured mixed (room better, hall and gate worse,
+  // docs/benchmarks.md "LiDAR pose priors"), so it is opt-in.
+  bool use_lidar_pose_priors = false;
 };
 
 // `section` is the node of the "visual" key.

@@ -1,6 +1,8 @@
 #pragma once
 // A keyframe: a frame's features, its pose, which landmark each feature
-// observes (-1: none) and, with a LiDAR, the measured depth of its keypoints.
+// observes (-1: none) and, with a LiDAR, the measured depth of its keypoints
+// and the LiDAR odometry's pose.
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -19,6 +21,9 @@ struct Keyframe {
   // Per keypoint: LiDAR depth z in this camera frame, NaN where none; empty
   // when no depths were given (VisualMap::setKeypointDepths).
   std::vector<double> keypoint_depth;
+  // The LiDAR odometry's camera pose at this keyframe's time, when the
+  // running system gave one (VisualMap::setOdometryPose).
+  std::optional<Eigen::Isometry3d> T_odom_camera;
 };
 
 }  // namespace lvslam::visual

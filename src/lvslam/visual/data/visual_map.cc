@@ -6,6 +6,7 @@
 #include <string>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/se3.h"
 
 namespace lvslam::visual {
 
@@ -148,6 +149,20 @@ void VisualMap::setKeypointDepths(int keyframe, std::vector<double> depths) {
   for (double& z : depths)
     if (!std::isfinite(z) || !(z > 0.0)) z = std::numeric_limits<double>::quiet_NaN();
   k.keypoint_depth = std::move(depths);
+}
+
+void VisualMap::setOdometryPose(int keyframe, const Eigen::Isometry3d& T_odom_camera) {
+  Keyframe& k = find(keyframes_, keyframe, "keyframe");
+  if (!T_odom_camera.matrix().allFinite() || !isRotation(T_odom_camera.linear()))
+    throw Error("VisualMap", "the odometry pose of keyframe " + std::to_string(keyframe) + " is not a rigid transform");
+  k.T_odom_camera = T_odom_camera;
+  if (!T_world_odom_) T_world_odom_ = k.T_camera_world.inverse() * T_odom_camera.inverse();
+}
+
+std::optional<Eigen::Isometry3d> VisualMap::odometryPrior(int keyframe) const {
+  const Keyframe& k = find(keyframes_, keyframe, "keyframe");
+  if (!k.T_odom_camera || !T_world_odom_) return std::nullopt;
+  return (*T_world_odom_ * *k.T_odom_camera).inverse();
 }
 
 Keyframe& VisualMap::keyframe(int id) { return find(keyframes_, id, "keyframe"); }

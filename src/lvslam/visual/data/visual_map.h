@@ -3,6 +3,7 @@
 // observations between them and the covisibility graph they induce. Ids are
 // assigned here and never reused; iteration order is by id (deterministic).
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "lvslam/visual/data/covisibility_graph.h"
@@ -43,6 +44,16 @@ class VisualMap {
   // lvslam::Error on an unknown keyframe or a size other than its keypoints'.
   void setKeypointDepths(int keyframe, std::vector<double> depths);
 
+  // The LiDAR odometry's camera pose T_odom_camera at the keyframe's time.
+  // The first one given fixes the map's alignment T_world_odom (the
+  // keyframe's pose at that moment); from then on odometryPrior() moves each
+  // such pose into the map. Throws lvslam::Error on an unknown keyframe or a
+  // pose that is not a finite rigid transform.
+  void setOdometryPose(int keyframe, const Eigen::Isometry3d& T_odom_camera);
+  const std::optional<Eigen::Isometry3d>& T_world_odom() const { return T_world_odom_; }
+  // T_camera_world the odometry gives for the keyframe; none without a pose.
+  std::optional<Eigen::Isometry3d> odometryPrior(int keyframe) const;
+
   Keyframe& keyframe(int id);
   const Keyframe& keyframe(int id) const;
   PointLandmark& point(int id);
@@ -70,6 +81,7 @@ class VisualMap {
   std::map<int, LineLandmark> lines_;
   CovisibilityGraph covisibility_;
   int next_keyframe_id_ = 0, next_point_id_ = 0, next_line_id_ = 0;
+  std::optional<Eigen::Isometry3d> T_world_odom_;
 };
 
 }  // namespace lvslam::visual

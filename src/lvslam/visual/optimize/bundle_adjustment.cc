@@ -16,6 +16,7 @@
 #include "lvslam/visual/residuals/orthonormal_line_manifold.h"
 #include "lvslam/visual/residuals/point_depth.h"
 #include "lvslam/visual/residuals/point_reprojection.h"
+#include "lvslam/visual/residuals/pose_prior.h"
 #include "lvslam/visual/residuals/se3_manifold.h"
 
 namespace lvslam::visual {
@@ -101,6 +102,7 @@ class CeresBundleAdjustment {
   CeresBundleAdjustment(BundleAdjustmentProblem& p, const BundleAdjustmentConfig& config)
       : p_(p), config_(config), b_(makeBlocks(p)), huber_(config.huber_delta),
         direction_huber_(config.direction_huber_delta), depth_huber_(config.depth_huber_delta),
+        prior_huber_(config.prior_huber_delta),
         problem_(problemOptions()),
         K_line_(lineProjectionMatrix(p.intrinsics.fx, p.intrinsics.fy, p.intrinsics.cx, p.intrinsics.cy)),
         point_ids_(p.point_observations.size(), nullptr), depth_ids_(p.point_observations.size(), nullptr),
@@ -109,6 +111,7 @@ class CeresBundleAdjustment {
     addPointResiduals();
     addDepthResiduals();
     addLineResiduals();
+    addPriorResiduals();
     configureBlocks();
   }
 
@@ -196,6 +199,17 @@ class CeresBundleAdjustment {
     }
   }
 
+  // Only for poses the images constrain: a prior alone would just copy the LiDAR.
+  void addPriorResiduals() {
+    const double sigma_r = config_.prior_sigma_deg * M_PI / 180.0;
+    for (size_t k = 0; k < b_.poses.size(); ++k) {
+      const auto& prior = p_.keyframes[k].prior_T_camera_world;
+      if (!prior || !pose_used_[k] || p_.keyframes[k].fixed) continue;
+      problem_.AddResidualBlock(new PosePriorCost(*prior, config_.prior_sigma_m, sigma_r), &prior_huber_,
+                                b_.poses[k].data());
+    }
+  }
+
   void configureBlocks() {
     for (size_t k = 0; k < b_.poses.size(); ++k) {
       if (!pose_used_[k]) continue;
@@ -228,7 +242,7 @@ class CeresBundleAdjustment {
   Blocks b_;
   Se3LeftManifold pose_manifold_;
   OrthonormalLineManifold line_manifold_;
-  ceres::HuberLoss huber_, direction_huber_, depth_huber_;
+  ceres::HuberLoss huber_, direction_huber_, depth_huber_, prior_huber_;
   ceres::Problem problem_;  // after the manifolds and losses it borrows
   Eigen::Matrix3d K_line_;
   std::vector<ceres::ResidualBlockId> point_ids_, depth_ids_, line_ids_;
@@ -241,6 +255,13 @@ BundleAdjustmentResult runBundleAdjustment(BundleAdjustmentProblem& p, const Bun
   validate(p);
   if (!(config.depth_sigma_ratio > 0.0) || !(config.depth_huber_delta > 0.0))
     throw Error(kWhere, "depth_sigma_ratio and depth_huber_delta must be positive");
+  if (!(config.prior_sigma_m > 0.0) || !(config.prior_sigma_deg > 0.0) || !(config.prior_huber_delta > 0.0))
+    throw Error(kWhere, "prior_sigma_m, prior_sigma_deg and prior_huber_delta must be positive");
+  for (size_t k = 0; k < p.keyframes.size(); ++k) {
+    const auto& prior = p.keyframes[k].prior_T_camera_world;
+    if (prior && (!prior->matrix().allFinite() || !isRotation(prior->linear())))
+      throw Error(kWhere, "the pose prior of keyframe " + std::to_string(k) + " is not a finite rigid transform");
+  }
   BundleAdjustmentResult result;
   result.point_inlier.assign(p.point_observations.size(), false);
   result.line_inlier.assign(p.line_observations.size(), false);

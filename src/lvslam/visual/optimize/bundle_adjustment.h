@@ -39,12 +39,20 @@ struct BundleAdjustmentConfig {
   double depth_sigma_ratio = 0.02;
   double depth_huber_delta = 1.959963985;  // sqrt(3.841)
   double chi2_depth = 3.841;
+  // Pose priors from the LiDAR odometry (residuals/pose_prior.h), for the
+  // keyframes that have one: sigma of the camera centre and of the rotation,
+  // Huber width of the chi2 with 6 DoF at 95 % (a LiDAR pose that disagrees
+  // with the images weighs linearly, not quadratically).
+  double prior_sigma_m = 0.01;
+  double prior_sigma_deg = 0.2;
+  double prior_huber_delta = 3.548519; // sqrt(12.592)
   int num_threads = 1;
 };
 
 struct BaKeyframe {
   Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
   bool fixed = false;  // gauge: fix at least the oldest keyframes of the window
+  std::optional<Eigen::Isometry3d> prior_T_camera_world;  // from the LiDAR odometry
 };
 
 struct BaPoint {

@@ -88,7 +88,7 @@ LocalWindowResult adjustLocalWindow(VisualMap& map, int keyframe, const PinholeI
   problem.intrinsics = intrinsics;
   WindowIndex idx;
   for (const int kf : window) {
-    problem.keyframes.push_back({map.keyframe(kf).T_camera_world, false});
+    problem.keyframes.push_back({map.keyframe(kf).T_camera_world, false, map.odometryPrior(kf)});
     indexOf(idx.keyframe, idx.keyframe_ids, kf);
   }
   collectLandmarks(map, window, problem, idx);

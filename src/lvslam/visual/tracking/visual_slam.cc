@@ -1,6 +1,7 @@
 #include "lvslam/visual/tracking/visual_slam.h"
 
 #include <algorithm>
+#include <deque>
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
@@ -110,6 +111,7 @@ struct VisualSlam::Impl {
   int lost_frames = 0;
   std::vector<FusionLineWait> fusion_lines;
   std::vector<int> last_points;  // landmarks the last tracked frame observed
+  std::deque<StampedPose> lidar_poses;  // the latest addLidarPose() poses (T_odom_camera)
 
   VisualFrameResult track(ExtractedImage image, std::vector<PixelDepth> hints);
   void initialize(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
@@ -122,7 +124,24 @@ struct VisualSlam::Impl {
   bool needKeyframe() const;
   void insertKeyframe();
   std::vector<int> pendingFusionLines();
+  void attachLidarPoses();
 };
+
+// Keyframes meet the LiDAR poses of their times, whichever came first (the
+// initial pair's first view is older than the poses delivered before it).
+void VisualSlam::Impl::attachLidarPoses() {
+  if (lidar_poses.empty()) return;
+  const double oldest = lidar_poses.front().t;
+  const auto& keyframes = map.keyframes();
+  for (auto it = keyframes.rbegin(); it != keyframes.rend() && it->second.timestamp >= oldest; ++it) {
+    if (it->second.T_odom_camera) continue;
+    for (const StampedPose& pose : lidar_poses) {
+      if (pose.t != it->second.timestamp) continue;
+      map.setOdometryPose(it->first, pose.T_world_frame);
+      break;
+    }
+  }
+}
 
 VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<PixelDepth> hints) {
   ++frame_index;
@@ -159,6 +178,7 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   result.tracked_points = current.point_inliers;
   result.tracked_lines = current.line_inliers;
   result.keyframe = current_keyframe >= 0;
+  attachLidarPoses();
   return result;
 }
 
@@ -430,6 +450,16 @@ int VisualSlam::addFusionLine(int segment, const Eigen::Vector3d& A_camera, cons
   }
   s.fusion_lines.push_back({id, s.frame_index + s.config.fusion_line_lifetime});
   return id;
+}
+
+void VisualSlam::addLidarPose(double t, const Eigen::Isometry3d& T_odom_camera) {
+  if (!T_odom_camera.matrix().allFinite() || !isRotation(T_odom_camera.linear()))
+    throw Error("VisualSlam::addLidarPose", "the pose at t=" + std::to_string(t) + " is not a rigid transform");
+  Impl& s = *impl_;
+  if (!s.config.visual.use_lidar_pose_priors) return;
+  s.lidar_poses.push_back({t, T_odom_camera});
+  if (s.lidar_poses.size() > s.config.lidar_pose_buffer) s.lidar_poses.pop_front();
+  s.attachLidarPoses();
 }
 
 std::vector<Eigen::Vector2d> VisualSlam::keypointPixels() const {

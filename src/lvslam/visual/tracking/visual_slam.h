@@ -65,6 +65,7 @@ struct VisualSlamConfig {
   int min_keyframe_interval = 3;
   int max_keyframe_interval = 5;
   int fusion_line_lifetime = 15;  // frames a fusion line waits for a keyframe observation
+  size_t lidar_pose_buffer = 64;  // LiDAR poses kept for keyframes (> init window + LiDAR lag)
   PointTriangulationConfig triangulation;
   CullingConfig culling;
   LineDepthCheckConfig depth_check;
@@ -137,6 +138,15 @@ class VisualSlam {
   // keyframe when the frame became one (and config.visual.use_keypoint_depths),
   // else ignored. Throws lvslam::Error when the size is not keypointPixels()'.
   void setKeypointDepths(const std::vector<double>& depths);
+
+  // The LiDAR odometry's camera pose at time t (T_odom_camera: the camera in
+  // the odometry's world), given in time order, typically a few frames late.
+  // The latest config.lidar_pose_buffer are kept: a keyframe of the current
+  // map at one of their times (now or later, as the initial pair's first
+  // view) takes it as its prior in local BA (config.visual.
+  // use_lidar_pose_priors; the first one aligns the odometry with the map).
+  // Throws lvslam::Error when T is not a finite rigid transform.
+  void addLidarPose(double t, const Eigen::Isometry3d& T_odom_camera);
 
   TrackingState state() const;
   int mapId() const;

@@ -1,0 +1,60 @@
+#pragma once
+// Prior on a keyframe pose from the LiDAR odometry (lvslam's addition to the
+// paper's BA, docs/visual-subsystem.md): the camera pose the LiDAR subsystem
+// gives at the keyframe's time, moved into the visual map. Residual on
+// T = T_camera_world against the prior T_p:
+//   e = [ (c - c_p) / sigma_t ; log(R R_p^T) / sigma_r ],  c = -R^T t,
+// the camera centre in the world and the rotation error in the camera frame,
+// with analytic Jacobians for the left update T <- exp(delta) T:
+//   dc/drho = -R^T, dc/dphi = 0, dlog/dphi = J_l^-1(log(R R_p^T)).
+#include <ceres/sized_cost_function.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "lvslam/core/se3.h"
+#include "lvslam/visual/residuals/pose_block.h"
+
+namespace lvslam::visual {
+
+struct PosePrior {
+  static void evaluate(const Eigen::Isometry3d& T_camera_world, const Eigen::Isometry3d& prior_T_camera_world,
+                       double inv_sigma_t, double inv_sigma_r, Eigen::Matrix<double, 6, 1>& residual,
+                       Eigen::Matrix<double, 6, 6>* J_pose) {
+    const Eigen::Matrix3d R = T_camera_world.linear();
+    const Eigen::Vector3d c = -R.transpose() * T_camera_world.translation();
+    const Eigen::Matrix3d R_p = prior_T_camera_world.linear();
+    const Eigen::Vector3d c_p = -R_p.transpose() * prior_T_camera_world.translation();
+    const Eigen::Vector3d r_rot = logSO3(R * R_p.transpose());
+    residual.head<3>() = inv_sigma_t * (c - c_p);
+    residual.tail<3>() = inv_sigma_r * r_rot;
+    if (J_pose) {
+      J_pose->setZero();
+      J_pose->topLeftCorner<3, 3>() = -inv_sigma_t * R.transpose();
+      J_pose->bottomRightCorner<3, 3>() = inv_sigma_r * leftJacobianSO3Inverse(r_rot);
+    }
+  }
+};
+
+// Block: pose [t, q] (Se3LeftManifold convention).
+class PosePriorCost final : public ceres::SizedCostFunction<6, kPoseBlockSize> {
+ public:
+  PosePriorCost(const Eigen::Isometry3d& prior_T_camera_world, double sigma_t, double sigma_r)
+      : prior_(prior_T_camera_world), inv_sigma_t_(1.0 / sigma_t), inv_sigma_r_(1.0 / sigma_r) {}
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    Eigen::Matrix<double, 6, 1> r;
+    Eigen::Matrix<double, 6, 6> J;
+    const bool want = jacobians && jacobians[0];
+    PosePrior::evaluate(fromPoseBlock(parameters[0]), prior_, inv_sigma_t_, inv_sigma_r_, r, want ? &J : nullptr);
+    Eigen::Map<Eigen::Matrix<double, 6, 1>>{residuals} = r;
+    if (want) writePoseJacobian<6>(J, jacobians[0]);
+    return true;
+  }
+
+ private:
+  Eigen::Isometry3d prior_;
+  double inv_sigma_t_, inv_sigma_r_;
+};
+
+}  // namespace lvslam::visual
