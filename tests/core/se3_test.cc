@@ -62,6 +62,17 @@ TEST(Se3, IsRotationRejectsReflectionsScalesAndNan) {
   EXPECT_TRUE(isRotation(closestRotation(noisy), 1e-12));
 }
 
+TEST(Se3, IsRigidTransformNeedsAFiniteTranslationAndARotation) {
+  Eigen::Isometry3d T = makePose(expSO3(Eigen::Vector3d(0.1, -0.2, 0.3)), Eigen::Vector3d(1, 2, 3));
+  EXPECT_TRUE(isRigidTransform(T));
+  Eigen::Isometry3d nan_translation = T;
+  nan_translation.translation().y() = std::nan("");
+  EXPECT_FALSE(isRigidTransform(nan_translation));
+  Eigen::Isometry3d scaled = T;
+  scaled.linear() *= 1.01;
+  EXPECT_FALSE(isRigidTransform(scaled));
+}
+
 TEST(Se3, InterpolationIsSlerpPlusLerp) {
   const Eigen::Isometry3d A = makePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, 0));
   const Eigen::Isometry3d B =

@@ -75,6 +75,10 @@ bool isRotation(const Eigen::Matrix3d& R, double tol) {
   return orth <= tol && std::abs(R.determinant() - 1.0) <= tol;
 }
 
+bool isRigidTransform(const Eigen::Isometry3d& T, double tol) {
+  return T.matrix().allFinite() && isRotation(T.linear(), tol);
+}
+
 Eigen::Matrix3d closestRotation(const Eigen::Matrix3d& M) {
   Eigen::JacobiSVD<Eigen::Matrix3d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3d D = Eigen::Matrix3d::Identity();

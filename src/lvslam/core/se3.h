@@ -26,6 +26,8 @@ Vector6d logSE3(const Eigen::Isometry3d& T);
 
 // True when R is a proper rotation: R^T R = I and det R = 1, within tol.
 bool isRotation(const Eigen::Matrix3d& R, double tol = 1e-3);
+// True when T is finite and its linear part is a rotation (isRotation).
+bool isRigidTransform(const Eigen::Isometry3d& T, double tol = 1e-3);
 
 // Re-orthonormalises a nearly-rotation matrix (closest rotation in Frobenius norm).
 Eigen::Matrix3d closestRotation(const Eigen::Matrix3d& M);

@@ -12,7 +12,8 @@ LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibrat
   if (config.mode == RunMode::kFused && calibration.camera) {
     fusion_.emplace(*calibration.camera, calibration.T_camera_lidar, config.fusion);
     fusion_->setLidarFeedback(config.lidar_direction_refinement);
-    T_lidar_camera_ = calibration.T_camera_lidar.inverse();
+    // Camera-time poses are only worth handing back when the visual side uses them.
+    if (config.visual.visual.use_lidar_pose_priors) T_lidar_camera_ = calibration.T_camera_lidar.inverse();
   }
 }
 

@@ -49,7 +49,8 @@ class LidarWorker {
   bool scan_pending_ = false;
   double pending_prepare_ms_ = 0.0;
   std::vector<std::size_t> frames_waiting_;  // frames whose pose needs the pending scan
-  std::optional<Eigen::Isometry3d> T_lidar_camera_;  // fused mode: camera poses go to the visual side
+  // Fused mode with visual.lidar_pose_priors: camera poses go to the visual side.
+  std::optional<Eigen::Isometry3d> T_lidar_camera_;
   Trajectory new_camera_poses_;                      // for the next answer
   bool previous_scan_lost_ = false;
   std::vector<ScanRecord> scans_;

@@ -115,13 +115,18 @@ void runLidarJob(LidarWorker& worker, LidarJob& job) {
   }
 }
 
+// Timed: the visual record keeps the extraction time.
+VisualFrameJob extractFrame(visual::FeatureExtractor& extractor, const ImageJob& frame) {
+  const Stopwatch watch;
+  visual::ExtractedImage image = visual::extractImage(extractor, frame.image);
+  return VisualFrameJob{std::move(image), watch.ms(), frame.exchange};
+}
+
 VisualJob extract(visual::FeatureExtractor& extractor, ExtractionJob& job) {
   if (auto* scan = std::get_if<ScanPtr>(&job)) return *scan;
   auto& frame = std::get<ImageJob>(job);
   try {
-    const Stopwatch watch;
-    visual::ExtractedImage image = visual::extractImage(extractor, frame.image);
-    return VisualFrameJob{std::move(image), watch.ms(), frame.exchange};
+    return extractFrame(extractor, frame);
   } catch (...) {
     if (frame.exchange) failPromise(frame.exchange->segments, std::current_exception());
     throw;
@@ -279,9 +284,8 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
         const ExchangePtr exchange =
             workers.lidar && workers.visual && threaded ? std::make_shared<FrameExchange>() : nullptr;
         if (workers.visual && !threaded) {
-          const Stopwatch watch;
-          visual::ExtractedImage extracted = visual::extractImage(*workers.extractor, image);
-          const VisualFrameFeatures features = workers.visual->track(std::move(extracted), watch.ms());
+          VisualFrameJob frame = extractFrame(*workers.extractor, ImageJob{std::move(image), nullptr});
+          const VisualFrameFeatures features = workers.visual->track(std::move(frame.image), frame.extract_ms);
           if (workers.lidar) workers.visual->applyFusion(workers.lidar->addFrame(t, features));
         } else {
           if (workers.visual) ok = toVisual(ImageJob{std::move(image), exchange});

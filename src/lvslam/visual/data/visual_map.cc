@@ -153,7 +153,7 @@ void VisualMap::setKeypointDepths(int keyframe, std::vector<double> depths) {
 
 void VisualMap::setOdometryPose(int keyframe, const Eigen::Isometry3d& T_odom_camera) {
   Keyframe& k = find(keyframes_, keyframe, "keyframe");
-  if (!T_odom_camera.matrix().allFinite() || !isRotation(T_odom_camera.linear()))
+  if (!isRigidTransform(T_odom_camera))
     throw Error("VisualMap", "the odometry pose of keyframe " + std::to_string(keyframe) + " is not a rigid transform");
   k.T_odom_camera = T_odom_camera;
   if (!T_world_odom_) T_world_odom_ = k.T_camera_world.inverse() * T_odom_camera.inverse();

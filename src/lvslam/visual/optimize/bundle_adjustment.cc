@@ -259,7 +259,7 @@ BundleAdjustmentResult runBundleAdjustment(BundleAdjustmentProblem& p, const Bun
     throw Error(kWhere, "prior_sigma_m, prior_sigma_deg and prior_huber_delta must be positive");
   for (size_t k = 0; k < p.keyframes.size(); ++k) {
     const auto& prior = p.keyframes[k].prior_T_camera_world;
-    if (prior && (!prior->matrix().allFinite() || !isRotation(prior->linear())))
+    if (prior && !isRigidTransform(*prior))
       throw Error(kWhere, "the pose prior of keyframe " + std::to_string(k) + " is not a finite rigid transform");
   }
   BundleAdjustmentResult result;

@@ -50,7 +50,7 @@ class PoseProblem {
     const Eigen::Matrix3d R = T.linear();
     const Eigen::Vector3d t = T.translation();
     Eigen::Vector2d r;
-    Eigen::Matrix<double, 2, 6> J;
+    Eigen::Matrix<double, 2, 6> J = Eigen::Matrix<double, 2, 6>::Zero();  // read only with jacobians; zeroed for -Wmaybe-uninitialized
     for (size_t i = 0; i < points_.size(); ++i) {
       if (!point_in[i]) continue;
       const auto& o = points_[i];

@@ -453,7 +453,7 @@ int VisualSlam::addFusionLine(int segment, const Eigen::Vector3d& A_camera, cons
 }
 
 void VisualSlam::addLidarPose(double t, const Eigen::Isometry3d& T_odom_camera) {
-  if (!T_odom_camera.matrix().allFinite() || !isRotation(T_odom_camera.linear()))
+  if (!isRigidTransform(T_odom_camera))
     throw Error("VisualSlam::addLidarPose", "the pose at t=" + std::to_string(t) + " is not a rigid transform");
   Impl& s = *impl_;
   if (!s.config.visual.use_lidar_pose_priors) return;
