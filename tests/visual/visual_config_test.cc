@@ -59,6 +59,23 @@ TEST(VisualConfig, LidarPosePriorSection) {
   EXPECT_THROW(load("visual:\n  lidar_pose_priors: {sigma: 0.02}\n"), Error);
 }
 
+TEST(VisualConfig, MapReuseSection) {
+  const LocalKeyframeConfig defaults;
+  EXPECT_DOUBLE_EQ(load("visual: {}\n").local_map.nearby_radius_depths, defaults.nearby_radius_depths);
+  const VisualConfig c = load(
+      "visual:\n  map_reuse: {radius_depths: 0.5, max_angle_deg: 20, max_keyframes: 3, min_age_keyframes: 7}\n");
+  EXPECT_DOUBLE_EQ(c.local_map.nearby_radius_depths, 0.5);
+  EXPECT_DOUBLE_EQ(c.local_map.nearby_max_angle_deg, 20.0);
+  EXPECT_EQ(c.local_map.nearby_max, 3u);
+  EXPECT_EQ(c.local_map.nearby_min_age, 7u);
+  EXPECT_DOUBLE_EQ(load("visual:\n  map_reuse: {radius_depths: 0}\n").local_map.nearby_radius_depths, 0.0);  // off
+  const std::string bad = lvslam::testing::errorMessageOf([] { load("visual:\n  map_reuse: {max_angle_deg: 0}\n"); });
+  EXPECT_NE(bad.find("map_reuse"), std::string::npos) << bad;
+  EXPECT_THROW(load("visual:\n  map_reuse: {radius_depths: -1}\n"), Error);
+  EXPECT_THROW(load("visual:\n  map_reuse: {max_keyframes: -2}\n"), Error);
+  EXPECT_THROW(load("visual:\n  map_reuse: {radius: 1}\n"), Error);
+}
+
 TEST(VisualConfig, BadValuesAndUnknownKeysNameTheKey) {
   const std::string typo = lvslam::testing::errorMessageOf([] { load("visual:\n  orb: {max_featurs: 10}\n"); });
   EXPECT_NE(typo.find("max_featurs"), std::string::npos) << typo;

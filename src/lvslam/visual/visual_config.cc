@@ -73,7 +73,7 @@ void loadOptimisation(const YamlConfig& n, VisualConfig& c) {
 VisualConfig loadVisualConfig(const YamlConfig& section) {
   VisualConfig c;
   rejectUnknownKeys(section, {"orb", "lines", "pose", "bundle_adjustment", "initializer", "keypoint_depths",
-                             "lidar_pose_priors"});
+                             "lidar_pose_priors", "map_reuse"});
   loadFeatures(section, c.features);
   loadOptimisation(section, c);
   if (const auto init = section.find("initializer")) {
@@ -100,6 +100,20 @@ VisualConfig loadVisualConfig(const YamlConfig& section) {
     ba.prior_huber_delta = priors->getDouble("huber_delta", ba.prior_huber_delta);
     if (!(ba.prior_sigma_m > 0.0) || !(ba.prior_sigma_deg > 0.0) || !(ba.prior_huber_delta > 0.0))
       priors->fail("sigma_m, sigma_deg and huber_delta must be positive");
+  }
+  if (const auto reuse = section.find("map_reuse")) {
+    rejectUnknownKeys(*reuse, {"radius_depths", "max_angle_deg", "max_keyframes", "min_age_keyframes"});
+    LocalKeyframeConfig& m = c.local_map;
+    m.nearby_radius_depths = reuse->getDouble("radius_depths", m.nearby_radius_depths);
+    m.nearby_max_angle_deg = reuse->getDouble("max_angle_deg", m.nearby_max_angle_deg);
+    const int n = reuse->getInt("max_keyframes", static_cast<int>(m.nearby_max));
+    const int age = reuse->getInt("min_age_keyframes", static_cast<int>(m.nearby_min_age));
+    if (!(m.nearby_radius_depths >= 0.0) || !(m.nearby_max_angle_deg > 0.0 && m.nearby_max_angle_deg <= 180.0) ||
+        n < 0 || age < 0) {
+      reuse->fail("radius_depths >= 0, max_angle_deg in (0, 180], max_keyframes >= 0 and min_age_keyframes >= 0 required");
+    }
+    m.nearby_max = static_cast<std::size_t>(n);
+    m.nearby_min_age = static_cast<std::size_t>(age);
   }
   // The extractors and the initializer validate the rest when constructed;
   // do it now so a bad file fails at load time, naming the file.

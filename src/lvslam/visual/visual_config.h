@@ -9,6 +9,7 @@
 #include "lvslam/visual/match/point_matcher.h"
 #include "lvslam/visual/optimize/local_window_adjustment.h"
 #include "lvslam/visual/optimize/pose_optimization.h"
+#include "lvslam/visual/tracking/local_keyframes.h"
 
 namespace lvslam::visual {
 
@@ -19,6 +20,7 @@ struct VisualConfig {
   PoseOptimizationConfig pose;
   LocalWindowConfig local_window;  // includes the BA settings
   TwoViewInitializerConfig initializer;
+  LocalKeyframeConfig local_map;  // keyframes tracked against, nearby ones included (map reuse)
   // LiDAR depth of keyframe keypoints (VisualSlam::setKeypointDepths) enters
   // local BA as depth residuals (local_window.ba.depth_*); off: ignored.
   bool use_keypoint_depths = true;

@@ -180,4 +180,15 @@ std::vector<int> VisualMap::localWindow(int keyframe, size_t n) const {
   return window;
 }
 
+double medianSceneDepth(const VisualMap& map, int keyframe) {
+  const Keyframe& k = map.keyframe(keyframe);
+  std::vector<double> depths;
+  for (const int p : k.point_landmark) {
+    if (p >= 0 && !map.point(p).bad) depths.push_back((k.T_camera_world * map.point(p).p_world).z());
+  }
+  if (depths.empty()) return 0.0;
+  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
+  return depths[depths.size() / 2];
+}
+
 }  // namespace lvslam::visual

@@ -84,4 +84,7 @@ class VisualMap {
   std::optional<Eigen::Isometry3d> T_world_odom_;
 };
 
+// Median depth of the keyframe's point landmarks; 0 when it has none.
+double medianSceneDepth(const VisualMap& map, int keyframe);
+
 }  // namespace lvslam::visual

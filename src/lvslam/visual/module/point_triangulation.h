@@ -39,7 +39,4 @@ std::vector<int> triangulateNewPoints(VisualMap& map, int keyframe1, int keyfram
 std::vector<int> createDepthPoints(VisualMap& map, int keyframe, const PinholeIntrinsics& intrinsics,
                                    const PointTriangulationConfig& config = {});
 
-// Median depth of the keyframe's point landmarks; 0 when it has none.
-double medianSceneDepth(const VisualMap& map, int keyframe);
-
 }  // namespace lvslam::visual

@@ -48,7 +48,7 @@ void collectLandmarks(const VisualMap& map, const std::vector<int>& window, Bund
 int keyframeIndex(const VisualMap& map, int kf, BundleAdjustmentProblem& problem, WindowIndex& idx) {
   const auto it = idx.keyframe.find(kf);
   if (it != idx.keyframe.end()) return it->second;
-  problem.keyframes.push_back({map.keyframe(kf).T_camera_world, true});  // outside the window: fixed
+  problem.keyframes.push_back({map.keyframe(kf).T_camera_world, true, std::nullopt});  // outside the window: fixed
   return indexOf(idx.keyframe, idx.keyframe_ids, kf);
 }
 

@@ -1,6 +1,7 @@
 #include "lvslam/visual/tracking/local_keyframes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <utility>
@@ -28,6 +29,29 @@ LocalKeyframes selectLocalKeyframes(const VisualMap& map, const std::vector<int>
   for (size_t i = 0; i < ranked.size() && i < config.expanded; ++i) {
     for (const int nb : map.covisibility().bestNeighbours(ranked[i].first, config.neighbours_each)) add(nb);
   }
+  return out;
+}
+
+std::vector<int> nearbyKeyframes(const VisualMap& map, const Eigen::Isometry3d& T_camera_world, double radius,
+                                 const std::vector<int>& exclude, const LocalKeyframeConfig& config) {
+  if (!(radius > 0.0) || config.nearby_max == 0) return {};
+  const Eigen::Vector3d centre = T_camera_world.inverse().translation();
+  const Eigen::Vector3d axis = T_camera_world.linear().row(2).transpose();  // optical axis in the world
+  const double min_cos = std::cos(config.nearby_max_angle_deg * M_PI / 180.0);
+  const std::set<int> skip(exclude.begin(), exclude.end());
+  std::vector<std::pair<double, int>> near;  // (distance, keyframe)
+  const std::size_t count = map.keyframes().size();
+  std::size_t index = 0;  // ids grow with insertion, so the map's order is age
+  for (const auto& [id, k] : map.keyframes()) {
+    if (index++ + config.nearby_min_age >= count) break;
+    if (skip.count(id)) continue;
+    const double d = (k.T_camera_world.inverse().translation() - centre).norm();
+    if (d < radius && k.T_camera_world.linear().row(2).dot(axis) >= min_cos) near.emplace_back(d, id);
+  }
+  const std::size_t n = std::min(near.size(), config.nearby_max);
+  std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(n), near.end());
+  std::vector<int> out;
+  for (std::size_t i = 0; i < n; ++i) out.push_back(near[i].second);
   return out;
 }
 

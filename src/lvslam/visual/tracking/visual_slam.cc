@@ -254,9 +254,13 @@ std::vector<int> VisualSlam::Impl::pendingFusionLines() {
 
 bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
   if (!map.hasKeyframe(reference_keyframe)) return false;
-  const LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.local_map);
+  LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.visual.local_map);
+  const Eigen::Isometry3d T_predicted = velocity * T_last;
+  const double radius = config.visual.local_map.nearby_radius_depths * medianSceneDepth(map, reference_keyframe);
+  for (const int kf : nearbyKeyframes(map, T_predicted, radius, keyframes.keyframes, config.visual.local_map))
+    keyframes.keyframes.push_back(kf);
   const LocalMap local = collectLocalMap(map, keyframes.keyframes, pendingFusionLines());
-  FrameTrackingResult tracked = trackLocalMap(map, local, velocity * T_last, K, 1.0, tracker, current);
+  FrameTrackingResult tracked = trackLocalMap(map, local, T_predicted, K, 1.0, tracker, current);
   if (!tracked.success)  // fall back: no motion, wider window
     tracked = trackLocalMap(map, local, T_last, K, config.recovery_radius_scale, tracker, current);
   if (!tracked.success) return false;
@@ -342,7 +346,7 @@ bool VisualSlam::Impl::relocalize(VisualFrameResult& result) {
   for (const int kf : map.covisibility().bestNeighbours(reference_keyframe, config.relocalize_candidates))
     candidates.push_back(kf);
   for (const int kf : candidates) guesses.push_back(map.keyframe(kf).T_camera_world);
-  const LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.local_map);
+  const LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.visual.local_map);
   const LocalMap local = collectLocalMap(map, keyframes.keyframes, {});
   for (const Eigen::Isometry3d& guess : guesses) {
     const FrameTrackingResult tracked =

@@ -51,7 +51,6 @@ struct VisualSlamConfig {
   double recovery_radius_scale = 3.0;  // wider window after a failure / when lost
   int min_tracked = 30;                // point + line inliers
   size_t local_keyframes = 10;  // the reference keyframe's window when relocalising
-  LocalKeyframeConfig local_map;  // keyframes tracked against (ORB-SLAM's local keyframes)
   // Lost: relocalisation into the old map for this many frames, then a new map.
   int relocalize_frames = 15;
   size_t relocalize_candidates = 4;  // covisible neighbours of the reference keyframe tried as pose guesses
