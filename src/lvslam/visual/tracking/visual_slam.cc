@@ -10,6 +10,7 @@
 #include "lvslam/visual/optimize/solver_logging.h"
 #include "lvslam/visual/tracking/frame_tracker.h"
 #include "lvslam/visual/tracking/local_keyframes.h"
+#include "lvslam/visual/tracking/relocalization.h"
 
 namespace lvslam::visual {
 
@@ -332,37 +333,23 @@ void VisualSlam::Impl::newMap() {
   state = TrackingState::kInitializing;
 }
 
-// Relocalisation without bag of words: the old map is projected around
-// several pose guesses (the motion model carried over the lost frames, the
-// last pose, the reference keyframe and its best covisible neighbours) with
-// a wide window, then the pose is optimised; the first guess giving enough
-// inliers wins and the map (and its id) is kept.
+// Relocalisation into the old map (tracking/relocalization.h).
 bool VisualSlam::Impl::relocalize(VisualFrameResult& result) {
-  std::vector<Eigen::Isometry3d> guesses{T_last};
-  Eigen::Isometry3d extrapolated = T_last;
-  for (int i = 0; i <= lost_frames; ++i) extrapolated = velocity * extrapolated;
-  guesses.insert(guesses.begin(), extrapolated);
-  std::vector<int> candidates{reference_keyframe};
-  for (const int kf : map.covisibility().bestNeighbours(reference_keyframe, config.relocalize_candidates))
-    candidates.push_back(kf);
-  for (const int kf : candidates) guesses.push_back(map.keyframe(kf).T_camera_world);
+  const std::vector<Eigen::Isometry3d> guesses =
+      relocalizationGuesses(map, T_last, velocity, lost_frames, reference_keyframe, config.relocalize_candidates);
   const LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.visual.local_map);
   const LocalMap local = collectLocalMap(map, keyframes.keyframes, {});
-  for (const Eigen::Isometry3d& guess : guesses) {
-    const FrameTrackingResult tracked =
-        trackLocalMap(map, local, guess, K, config.recovery_radius_scale, tracker, current);
-    if (!tracked.success || current.point_inliers < config.relocalize_min_inliers) continue;
-    state = TrackingState::kTracking;
-    velocity = Eigen::Isometry3d::Identity();
-    T_last = current.T_camera_world;
-    current_has_pose = true;
-    lost_frames = 0;
-    last_points = observedLandmarks(current.point_landmark);
-    result.inlier_ratio = inlierRatio(current.point_inliers, current.line_inliers, tracked.matches);
-    return true;
-  }
-  current.point_inliers = current.line_inliers = 0;
-  return false;
+  const std::optional<FrameTrackingResult> tracked = relocalizeFrame(
+      map, local, guesses, K, config.recovery_radius_scale, config.relocalize_min_inliers, tracker, current);
+  if (!tracked) return false;
+  state = TrackingState::kTracking;
+  velocity = Eigen::Isometry3d::Identity();
+  T_last = current.T_camera_world;
+  current_has_pose = true;
+  lost_frames = 0;
+  last_points = observedLandmarks(current.point_landmark);
+  result.inlier_ratio = inlierRatio(current.point_inliers, current.line_inliers, tracked->matches);
+  return true;
 }
 
 void VisualSlam::Impl::recoverOrRestart(const std::vector<PixelDepth>& hints, VisualFrameResult& result) {
