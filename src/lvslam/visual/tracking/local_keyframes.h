@@ -45,10 +45,10 @@ struct LocalKeyframes {
 LocalKeyframes selectLocalKeyframes(const VisualMap& map, const std::vector<int>& tracked_points,
                                     int reference_keyframe, const LocalKeyframeConfig& config = {});
 
-// Keyframes (not in `exclude`, not among the config.nearby_min_age newest)
-// whose camera centre is within `radius` of
-// T_camera_world's and whose optical axis is within the configured angle of
-// its, closest first, at most config.nearby_max. None when radius <= 0.
+// Keyframes whose camera centre is within `radius` of T_camera_world's and
+// whose optical axis is within config.nearby_max_angle_deg of its, closest
+// first, at most config.nearby_max; not those in `exclude` nor the
+// config.nearby_min_age newest. None when radius <= 0.
 std::vector<int> nearbyKeyframes(const VisualMap& map, const Eigen::Isometry3d& T_camera_world, double radius,
                                  const std::vector<int>& exclude, const LocalKeyframeConfig& config = {});
 
