@@ -7,12 +7,15 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/visual/geometry/orthonormal_line.h"
+#include "visual/bundle_adjustment_errors.h"
 #include "visual/synthetic_scene.h"
 
 namespace lvslam::visual {
 namespace {
 
 using testing::SyntheticScene;
+using testing::BaErrors;
+using testing::baErrors;
 
 struct Truth {
   SyntheticScene scene;
@@ -73,44 +76,16 @@ void perturb(BundleAdjustmentProblem& p, unsigned seed) {
   }
 }
 
-struct Errors {
-  double max_translation = 0, max_rotation = 0, max_point = 0, max_line = 0;
-};
-
-// Landmarks seen by fewer than two keyframes are not determined; skip them.
-Errors errors(const BundleAdjustmentProblem& estimate, const SyntheticScene& truth) {
-  std::vector<int> point_views(truth.points.size(), 0), line_views(truth.segments.size(), 0);
-  for (const auto& o : estimate.point_observations) ++point_views[o.point];
-  for (const auto& o : estimate.line_observations) ++line_views[o.line];
-  Errors e;
-  for (size_t k = 0; k < truth.T_camera_world.size(); ++k) {
-    const Eigen::Isometry3d d = estimate.keyframes[k].T_camera_world * truth.T_camera_world[k].inverse();
-    e.max_translation = std::max(e.max_translation, (estimate.keyframes[k].T_camera_world.inverse().translation() -
-                                                     truth.T_camera_world[k].inverse().translation()).norm());
-    e.max_rotation = std::max(e.max_rotation, rotationAngle(d));
-  }
-  for (size_t i = 0; i < truth.points.size(); ++i) {
-    if (point_views[i] < 2) continue;
-    e.max_point = std::max(e.max_point, (estimate.points[i].p_world - truth.points[i]).norm());
-  }
-  for (size_t j = 0; j < truth.segments.size(); ++j) {
-    if (line_views[j] < 2) continue;
-    e.max_line = std::max(e.max_line, testing::sameLineError(estimate.lines[j].line_world,
-                                                             testing::lineOf(truth.segments[j])));
-  }
-  return e;
-}
-
 TEST(BundleAdjustment, ConvergesToTheTruthFromPerturbedStartWithExactObservations) {
   Truth t = makeProblem(0.0, 0.0, 3);
   ASSERT_GT(t.problem.line_observations.size(), 100u);
   perturb(t.problem, 4);
-  const Errors before = errors(t.problem, t.scene);
+  const BaErrors before = baErrors(t.problem, t.scene);
   EXPECT_GT(before.max_translation, 0.02);
   const BundleAdjustmentResult r = runBundleAdjustment(t.problem);
   ASSERT_TRUE(r.usable);
   EXPECT_LT(r.final_cost, 1e-8 * r.initial_cost);
-  const Errors after = errors(t.problem, t.scene);
+  const BaErrors after = baErrors(t.problem, t.scene);
   EXPECT_LT(after.max_translation, 1e-6);
   EXPECT_LT(after.max_rotation, 1e-7);
   EXPECT_LT(after.max_point, 1e-5);
@@ -131,7 +106,7 @@ TEST(BundleAdjustment, RejectsGrossOutliersAndStaysAccurateUnderNoise) {
   const size_t inliers = std::count(r.point_inlier.begin(), r.point_inlier.end(), true);
   const size_t clean = r.point_inlier.size() - t.gross_point_outliers.size();
   EXPECT_GT(inliers, 0.93 * clean);  // chi2 at 95 % drops about 5 % of clean ones
-  const Errors after = errors(t.problem, t.scene);
+  const BaErrors after = baErrors(t.problem, t.scene);
   EXPECT_LT(after.max_translation, 0.01);
   EXPECT_LT(after.max_rotation, 0.002);
 }
@@ -183,10 +158,10 @@ TEST(BundleAdjustment, PosePriorsHoldTheGaugeWithoutFixedKeyframes) {
     t.problem.keyframes[k].prior_T_camera_world = t.scene.T_camera_world[k];
   }
   perturb(t.problem, 22);
-  EXPECT_GT(errors(t.problem, t.scene).max_translation, 0.02);
+  EXPECT_GT(baErrors(t.problem, t.scene).max_translation, 0.02);
   const BundleAdjustmentResult r = runBundleAdjustment(t.problem);
   ASSERT_TRUE(r.usable);
-  const Errors after = errors(t.problem, t.scene);
+  const BaErrors after = baErrors(t.problem, t.scene);
   EXPECT_LT(after.max_translation, 1e-5);
   EXPECT_LT(after.max_rotation, 1e-6);
   EXPECT_LT(after.max_point, 1e-4);

@@ -10,11 +10,13 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/visual/optimize/bundle_adjustment.h"
+#include "visual/bundle_adjustment_errors.h"
 #include "visual/synthetic_scene.h"
 
 namespace lvslam::visual {
 namespace {
 
+using testing::baErrors;
 using testing::SyntheticScene;
 
 constexpr int kDepthKeyframe = 5;
@@ -50,30 +52,12 @@ ScaleCase makeScaledWindow(double scale, unsigned seed) {
   return c;
 }
 
-double maxPositionError(const BundleAdjustmentProblem& p, const SyntheticScene& truth) {
-  double e = 0.0;
-  for (size_t k = 0; k < truth.T_camera_world.size(); ++k) {
-    e = std::max(e, (p.keyframes[k].T_camera_world.inverse().translation() -
-                     truth.T_camera_world[k].inverse().translation()).norm());
-  }
-  return e;
-}
-
-double maxPointError(const BundleAdjustmentProblem& p, const SyntheticScene& truth) {
-  std::vector<int> views(truth.points.size(), 0);
-  for (const auto& o : p.point_observations) ++views[o.point];
-  double e = 0.0;
-  for (size_t i = 0; i < truth.points.size(); ++i)
-    if (views[i] >= 2) e = std::max(e, (p.points[i].p_world - truth.points[i]).norm());
-  return e;
-}
-
 TEST(DepthBundleAdjustment, WithoutDepthsAWrongScaleStays) {
   ScaleCase c = makeScaledWindow(0.9, 11);
-  const double before = maxPositionError(c.problem, c.scene);
+  const double before = baErrors(c.problem, c.scene).max_translation;
   ASSERT_GT(before, 0.05);
   ASSERT_TRUE(runBundleAdjustment(c.problem).usable);
-  EXPECT_GT(maxPositionError(c.problem, c.scene), 0.9 * before);
+  EXPECT_GT(baErrors(c.problem, c.scene).max_translation, 0.9 * before);
 }
 
 TEST(DepthBundleAdjustment, DepthsOfOneKeyframePullTheWindowToTheTrueScale) {
@@ -88,8 +72,8 @@ TEST(DepthBundleAdjustment, DepthsOfOneKeyframePullTheWindowToTheTrueScale) {
   ASSERT_GT(with_depth, 30);
   const BundleAdjustmentResult r = runBundleAdjustment(c.problem);
   ASSERT_TRUE(r.usable);
-  EXPECT_LT(maxPositionError(c.problem, c.scene), 1e-6);
-  EXPECT_LT(maxPointError(c.problem, c.scene), 1e-6);
+  EXPECT_LT(baErrors(c.problem, c.scene).max_translation, 1e-6);
+  EXPECT_LT(baErrors(c.problem, c.scene).max_point, 1e-6);
   for (size_t i = 0; i < r.depth_inlier.size(); ++i)
     EXPECT_EQ(r.depth_inlier[i], c.problem.point_observations[i].keyframe == kDepthKeyframe) << i;
 }
@@ -115,8 +99,8 @@ TEST(DepthBundleAdjustment, GrossDepthOutliersLoseOnlyTheirDepthTerm) {
     EXPECT_FALSE(r.depth_inlier[i]) << i;
     EXPECT_TRUE(r.point_inlier[i]) << i;
   }
-  EXPECT_LT(maxPositionError(c.problem, c.scene), 1e-5);
-  EXPECT_LT(maxPointError(c.problem, c.scene), 1e-5);
+  EXPECT_LT(baErrors(c.problem, c.scene).max_translation, 1e-5);
+  EXPECT_LT(baErrors(c.problem, c.scene).max_point, 1e-5);
 }
 
 TEST(DepthBundleAdjustment, RejectsNonPositiveDepthsAndIgnoresNaN) {

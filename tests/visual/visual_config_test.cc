@@ -12,6 +12,12 @@ VisualConfig load(const std::string& text) {
   return loadVisualConfig(YamlConfig::loadString(text, "test.yaml").at("visual"));
 }
 
+// The text fails to load with a message that names `key`.
+void expectErrorNaming(const std::string& text, const std::string& key) {
+  const std::string message = lvslam::testing::errorMessageOf([&] { load(text); });
+  EXPECT_NE(message.find(key), std::string::npos) << message;
+}
+
 TEST(VisualConfig, AbsentKeysKeepDefaultsAndPresentOnesOverride) {
   const VisualConfig defaults = load("visual: {}\n");
   EXPECT_EQ(defaults.features.orb.max_features, OrbExtractorConfig{}.max_features);
@@ -39,9 +45,7 @@ TEST(VisualConfig, KeypointDepthSection) {
   EXPECT_FALSE(c.use_keypoint_depths);
   EXPECT_DOUBLE_EQ(c.local_window.ba.depth_sigma_ratio, 0.05);
   EXPECT_DOUBLE_EQ(c.local_window.ba.depth_huber_delta, 1.5);
-  const std::string bad =
-      lvslam::testing::errorMessageOf([] { load("visual:\n  keypoint_depths: {sigma_ratio: 0.0}\n"); });
-  EXPECT_NE(bad.find("keypoint_depths"), std::string::npos) << bad;
+  expectErrorNaming("visual:\n  keypoint_depths: {sigma_ratio: 0.0}\n", "keypoint_depths");
   EXPECT_THROW(load("visual:\n  keypoint_depths: {sigma: 0.02}\n"), Error);
 }
 
@@ -53,9 +57,7 @@ TEST(VisualConfig, LidarPosePriorSection) {
   EXPECT_DOUBLE_EQ(c.local_window.ba.prior_sigma_m, 0.02);
   EXPECT_DOUBLE_EQ(c.local_window.ba.prior_sigma_deg, 0.5);
   EXPECT_DOUBLE_EQ(c.local_window.ba.prior_huber_delta, 2.0);
-  const std::string bad =
-      lvslam::testing::errorMessageOf([] { load("visual:\n  lidar_pose_priors: {sigma_deg: -1}\n"); });
-  EXPECT_NE(bad.find("lidar_pose_priors"), std::string::npos) << bad;
+  expectErrorNaming("visual:\n  lidar_pose_priors: {sigma_deg: -1}\n", "lidar_pose_priors");
   EXPECT_THROW(load("visual:\n  lidar_pose_priors: {sigma: 0.02}\n"), Error);
 }
 
@@ -69,8 +71,7 @@ TEST(VisualConfig, MapReuseSection) {
   EXPECT_EQ(c.local_map.nearby_max, 3u);
   EXPECT_EQ(c.local_map.nearby_min_age, 7u);
   EXPECT_DOUBLE_EQ(load("visual:\n  map_reuse: {radius_depths: 0}\n").local_map.nearby_radius_depths, 0.0);  // off
-  const std::string bad = lvslam::testing::errorMessageOf([] { load("visual:\n  map_reuse: {max_angle_deg: 0}\n"); });
-  EXPECT_NE(bad.find("map_reuse"), std::string::npos) << bad;
+  expectErrorNaming("visual:\n  map_reuse: {max_angle_deg: 0}\n", "map_reuse");
   EXPECT_THROW(load("visual:\n  map_reuse: {radius_depths: -1}\n"), Error);
   EXPECT_THROW(load("visual:\n  map_reuse: {max_keyframes: -2}\n"), Error);
   EXPECT_THROW(load("visual:\n  map_reuse: {radius: 1}\n"), Error);

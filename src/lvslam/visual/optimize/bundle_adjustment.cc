@@ -56,6 +56,18 @@ void validate(const BundleAdjustmentProblem& p) {
   for (const BaLine& l : p.lines) {
     if (!l.line_world.isValid(1e-6)) throw Error(kWhere, "a line landmark is not a valid Plücker line");
   }
+  for (size_t k = 0; k < p.keyframes.size(); ++k) {
+    const auto& prior = p.keyframes[k].prior_T_camera_world;
+    if (prior && !isRigidTransform(*prior))
+      throw Error(kWhere, "the pose prior of keyframe " + std::to_string(k) + " is not a finite rigid transform");
+  }
+}
+
+void validate(const BundleAdjustmentConfig& c) {
+  if (!(c.depth_sigma_ratio > 0.0) || !(c.depth_huber_delta > 0.0))
+    throw Error(kWhere, "depth_sigma_ratio and depth_huber_delta must be positive");
+  if (!(c.prior_sigma_m > 0.0) || !(c.prior_sigma_deg > 0.0) || !(c.prior_huber_delta > 0.0))
+    throw Error(kWhere, "prior_sigma_m, prior_sigma_deg and prior_huber_delta must be positive");
 }
 
 // Parameter storage, one contiguous block per variable.
@@ -87,13 +99,13 @@ ceres::Solver::Options solverOptions(const BundleAdjustmentConfig& config, int i
   return o;
 }
 
-// Squared whitened residual (no loss) of a residual block (1 or 2 rows).
+// Squared whitened residual (no loss) of a residual block of 1 or 2 rows (a
+// 1-row block leaves r[1] at 0).
 double chi2Of(const ceres::Problem& problem, ceres::ResidualBlockId id) {
   double cost = 0.0;
   std::array<double, 2> r{};
   if (!problem.EvaluateResidualBlock(id, false, &cost, r.data(), nullptr)) return INFINITY;
-  const int rows = problem.GetCostFunctionForResidualBlock(id)->num_residuals();
-  return rows == 1 ? r[0] * r[0] : r[0] * r[0] + r[1] * r[1];
+  return r[0] * r[0] + r[1] * r[1];
 }
 
 // The Ceres problem of one BA run: parameter blocks, residuals and their ids.
@@ -253,15 +265,7 @@ class CeresBundleAdjustment {
 
 BundleAdjustmentResult runBundleAdjustment(BundleAdjustmentProblem& p, const BundleAdjustmentConfig& config) {
   validate(p);
-  if (!(config.depth_sigma_ratio > 0.0) || !(config.depth_huber_delta > 0.0))
-    throw Error(kWhere, "depth_sigma_ratio and depth_huber_delta must be positive");
-  if (!(config.prior_sigma_m > 0.0) || !(config.prior_sigma_deg > 0.0) || !(config.prior_huber_delta > 0.0))
-    throw Error(kWhere, "prior_sigma_m, prior_sigma_deg and prior_huber_delta must be positive");
-  for (size_t k = 0; k < p.keyframes.size(); ++k) {
-    const auto& prior = p.keyframes[k].prior_T_camera_world;
-    if (prior && !isRigidTransform(*prior))
-      throw Error(kWhere, "the pose prior of keyframe " + std::to_string(k) + " is not a finite rigid transform");
-  }
+  validate(config);
   BundleAdjustmentResult result;
   result.point_inlier.assign(p.point_observations.size(), false);
   result.line_inlier.assign(p.line_observations.size(), false);

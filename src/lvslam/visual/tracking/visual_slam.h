@@ -50,7 +50,6 @@ struct VisualSlamConfig {
   double refine_radius_px = 5.0;
   double recovery_radius_scale = 3.0;  // wider window after a failure / when lost
   int min_tracked = 30;                // point + line inliers
-  size_t local_keyframes = 10;  // the reference keyframe's window when relocalising
   // Lost: relocalisation into the old map for this many frames, then a new map.
   int relocalize_frames = 15;
   size_t relocalize_candidates = 4;  // covisible neighbours of the reference keyframe tried as pose guesses
