@@ -7,19 +7,13 @@
 
 #include "lvslam/core/se3.h"
 #include "lvslam/fusion/debug_image.h"
+#include "fusion/test_rig.h"
 
 namespace lvslam::fusion {
 namespace {
 
-// Camera looking along the LiDAR's x axis (the usual rig: camera z forward,
-// x right, y down; LiDAR x forward, y left, z up), 10 cm below it.
-Eigen::Isometry3d cameraFromLidar() {
-  Eigen::Matrix3d R_lidar_camera;
-  R_lidar_camera << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-  return makePose(R_lidar_camera, Eigen::Vector3d(0.1, 0.0, -0.1)).inverse();
-}
-
-PinholeCamera testCamera() { return PinholeCamera(640, 480, 400.0, 400.0, 320.0, 240.0); }
+using testing::cameraFromLidar;
+using testing::testCamera;
 
 // The LiDAR drives along world x at 1 m/s, yawing at 0.2 rad/s.
 Eigen::Isometry3d lidarPose(double t) {

@@ -4,10 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include "fusion/test_rig.h"
+
 namespace lvslam::fusion {
 namespace {
 
-PinholeCamera testCamera() { return PinholeCamera(640, 480, 400.0, 400.0, 320.0, 240.0); }
+using testing::testCamera;
 
 ImageSegment segmentOf(const PinholeCamera& cam, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return {*cam.project(a), *cam.project(b)};

@@ -47,6 +47,7 @@ TEST(SystemConfig, ReadsEverySection) {
       "  fusion_lines_in_tracking: false\n"
       "  lidar_direction_refinement: false\n"
       "  depth_hint_max_dt: 0.04\n"
+      "  keypoint_depth_max_dt: 0.07\n"
       "  map_voxel: 0.3\n");
   EXPECT_DOUBLE_EQ(c.lidar.preprocess.voxel_size, 0.4);
   EXPECT_EQ(c.visual.visual.features.orb.max_features, 543);
@@ -63,6 +64,7 @@ TEST(SystemConfig, ReadsEverySection) {
   EXPECT_FALSE(c.fusion_lines_in_tracking);
   EXPECT_FALSE(c.lidar_direction_refinement);
   EXPECT_DOUBLE_EQ(c.depth_hint_max_dt, 0.04);
+  EXPECT_DOUBLE_EQ(c.keypoint_depth_max_dt, 0.07);
   EXPECT_DOUBLE_EQ(c.map_voxel, 0.3);
 }
 
@@ -99,6 +101,8 @@ TEST(SystemConfig, InvalidValuesAreErrorsNamingTheKey) {
   EXPECT_NE(voxel.find("system.map_voxel"), std::string::npos) << voxel;
   const std::string dt = errorMessageOf([] { load("system:\n  depth_hint_max_dt: 0\n"); });
   EXPECT_NE(dt.find("system.depth_hint_max_dt"), std::string::npos) << dt;
+  const std::string keyframe_dt = errorMessageOf([] { load("system:\n  keypoint_depth_max_dt: -0.1\n"); });
+  EXPECT_NE(keyframe_dt.find("system.keypoint_depth_max_dt"), std::string::npos) << keyframe_dt;
   EXPECT_THROW(load("system:\n  map_voxel: .nan\n"), lvslam::Error);
   EXPECT_THROW(load("system:\n  fusion_lines_in_tracking: maybe\n"), lvslam::Error);
 }

@@ -32,6 +32,10 @@ struct SystemConfig {
   // A keyframe keypoint takes the LiDAR depth of features this close (pixels;
   // the features are ~2000 per image, 3 px gave 13 depths per keyframe, 8 px 165).
   double keypoint_depth_radius_px = 8.0;
+  // Visual mode with a LiDAR: raw points this close in time to a keyframe,
+  // deskewed with the camera's motion, give its keypoint depths (one sweep
+  // at 10 Hz; the sweep phase then never leaves a keyframe without depth).
+  double keypoint_depth_max_dt = 0.1;
   double map_voxel = 0.2;  // m, voxel of the exported LiDAR map (map.ply)
   // One thread, fixed order: byte-identical output for the same input.
   bool deterministic = false;

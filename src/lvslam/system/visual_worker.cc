@@ -1,7 +1,10 @@
 #include "lvslam/system/visual_worker.h"
 
+#include <optional>
+
 #include "lvslam/core/error.h"
 #include "lvslam/fusion/lidar_depth_hints.h"
+#include "lvslam/fusion/surface_depth.h"
 #include "lvslam/system/stopwatch.h"
 
 namespace lvslam::system {
@@ -13,6 +16,16 @@ const PinholeCamera& requireCamera(const Calibration& calibration) {
   return *calibration.camera;
 }
 
+// The camera's motion from the previous frame to this one, when both were
+// tracked in the same map: it deskews the LiDAR points of the depth hints.
+std::optional<fusion::CameraMotion> motionFromPrevious(const std::vector<VisualFrameRecord>& previous,
+                                                       const visual::VisualFrameResult& now) {
+  if (previous.empty() || !now.pose_valid) return std::nullopt;
+  const visual::VisualFrameResult& before = previous.back().result;
+  if (!before.pose_valid || before.map_id != now.map_id) return std::nullopt;
+  return fusion::CameraMotion{before.timestamp, now.T_world_camera.inverse() * before.T_world_camera};
+}
+
 }  // namespace
 
 VisualWorker::VisualWorker(const SystemConfig& config, const Calibration& calibration, bool has_lidar)
@@ -21,6 +34,9 @@ VisualWorker::VisualWorker(const SystemConfig& config, const Calibration& calibr
       use_keypoint_depths_(config.visual.visual.use_keypoint_depths),
       hint_max_dt_(config.depth_hint_max_dt),
       has_lidar_(has_lidar),
+      depths_from_scans_(has_lidar && config.mode == RunMode::kVisual && config.visual.visual.use_keypoint_depths),
+      keypoint_depth_radius_px_(config.keypoint_depth_radius_px),
+      keypoint_depth_max_dt_(config.keypoint_depth_max_dt),
       slam_(config.visual, requireCamera(calibration)) {}
 
 void VisualWorker::addScan(std::shared_ptr<const LidarScan> scan) {
@@ -42,10 +58,23 @@ VisualFrameFeatures VisualWorker::track(visual::ExtractedImage image, double ext
   const Stopwatch watch;
   record.result = slam_.track(std::move(image));
   record.track_ms = watch.ms();
+  if (depths_from_scans_ && record.result.pose_valid && slam_.currentIsKeyframe()) {
+    // Visual mode has no LiDAR odometry to accumulate features with: the raw
+    // points of the latest sweeps, deskewed with the camera's own motion,
+    // keep the map metric instead. Without that motion only the points
+    // measured close to the image time are safe.
+    const Stopwatch depth_watch;
+    const std::optional<fusion::CameraMotion> motion = motionFromPrevious(frames_, record.result);
+    const double max_dt = motion ? keypoint_depth_max_dt_ : hint_max_dt_;
+    slam_.setKeypointDepths(
+        fusion::surfaceDepths(fusion::lidarDepthHints(recent_scans_, record.t, calibration_, max_dt, motion),
+                              slam_.keypointPixels(), keypoint_depth_radius_px_));
+    record.hints_ms += depth_watch.ms();
+  }
   frames_.push_back(std::move(record));
   VisualFrameFeatures features;
   for (const visual::ImageLineSegment& s : slam_.lineSegments()) features.segments.push_back({s.start, s.end});
-  if (use_keypoint_depths_ && slam_.currentIsKeyframe()) features.keyframe_keypoints = slam_.keypointPixels();
+  if (!depths_from_scans_ && use_keypoint_depths_ && slam_.currentIsKeyframe()) features.keyframe_keypoints = slam_.keypointPixels();
   return features;
 }
 

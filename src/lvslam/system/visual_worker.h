@@ -1,7 +1,9 @@
 #pragma once
 // The visual side of the dual system, run by one thread: the visual
 // subsystem, fed with LiDAR depth hints for a metric start (from the latest
-// raw scans) and, in fused mode, with the fusion lines of each frame.
+// raw scans); in fused mode with the fusion lines of each frame and the
+// fusion framework's depths for keyframe points, in visual mode with keyframe
+// depths from the raw scans.
 #include <memory>
 #include <vector>
 
@@ -37,6 +39,9 @@ class VisualWorker {
   bool use_keypoint_depths_;
   double hint_max_dt_;
   bool has_lidar_;
+  bool depths_from_scans_;  // visual mode with a LiDAR: keyframe depths from raw points
+  double keypoint_depth_radius_px_;
+  double keypoint_depth_max_dt_;  // s, deskewed raw points for keyframe depths
   visual::VisualSlam slam_;
   std::vector<std::shared_ptr<const LidarScan>> recent_scans_;
   std::vector<VisualFrameRecord> frames_;
