@@ -107,7 +107,8 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
   cmd->add_option("--groundtruth", args->input.groundtruth_file, "TUM ground truth for bags (frame from the preset)");
   auto* mode = cmd->add_option("--mode", args->mode,
                   "fused (both subsystems, the fusion framework and the detection module), lidar (LiDAR odometry "
-                  "only) or visual (monocular point-line SLAM; with a LiDAR its raw points give metric depth to the start and to keyframe points)")
+                  "only) or visual (monocular point-line SLAM; with a LiDAR its raw points give metric depth to "
+                  "the start and to keyframe points)")
       ->default_val("fused")
       ->check(CLI::IsMember({"lidar", "visual", "fused"}));
   cmd->add_option("--out", args->out_dir, "Output folder")->default_val("out/run");

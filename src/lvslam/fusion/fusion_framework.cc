@@ -53,7 +53,7 @@ std::vector<double> FusionFramework::pointDepths(const Eigen::Isometry3d& T_worl
     const auto px = camera_.project(f.p_camera);
     if (px && camera_.inImage(*px)) samples.push_back({*px, f.p_camera.z()});
   }
-  return surfaceDepths(samples, pixels, max_pixel_distance);
+  return surfaceDepths(samples, pixels, max_pixel_distance, camera_.width(), camera_.height());
 }
 
 }  // namespace lvslam::fusion

@@ -2,39 +2,36 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
-#include <unordered_map>
+
+#include "lvslam/visual/match/feature_grid.h"
 
 namespace lvslam::fusion {
 
 std::vector<double> surfaceDepths(const std::vector<visual::PixelDepth>& samples,
-                                  const std::vector<Eigen::Vector2d>& pixels, double radius_px) {
+                                  const std::vector<Eigen::Vector2d>& pixels, double radius_px, int width,
+                                  int height) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> depths(pixels.size(), kNaN);
-  if (!(radius_px > 0.0)) return depths;
-  // Bucket the samples in cells of radius_px: a pixel's neighbours are in the 3 x 3 cells around it.
-  const double cell = radius_px;
-  auto key = [cell](double u, double v) {
-    const auto iu = static_cast<std::uint32_t>(static_cast<std::int32_t>(std::floor(u / cell)));
-    const auto iv = static_cast<std::uint32_t>(static_cast<std::int32_t>(std::floor(v / cell)));
-    return (static_cast<std::uint64_t>(iu) << 32) | iv;
-  };
-  std::unordered_map<std::uint64_t, std::vector<const visual::PixelDepth*>> grid;
-  for (const visual::PixelDepth& s : samples)
-    if (s.pixel.allFinite() && std::isfinite(s.depth) && s.depth > 0.0) grid[key(s.pixel.x(), s.pixel.y())].push_back(&s);
+  if (!(radius_px > 0.0) || !std::isfinite(radius_px)) return depths;
+  std::vector<Eigen::Vector2d> sample_pixels;
+  std::vector<double> sample_depths;
+  for (const visual::PixelDepth& s : samples) {
+    if (!s.pixel.allFinite() || !std::isfinite(s.depth) || !(s.depth > 0.0)) continue;
+    sample_pixels.push_back(s.pixel);
+    sample_depths.push_back(s.depth);
+  }
+  if (sample_pixels.empty()) return depths;
+  // Cells of the radius (at most the image): a pixel's neighbours lie in the cells around it.
+  const double cell = std::ceil(std::min(radius_px, static_cast<double>(std::max({width, height, 1}))));
+  const visual::FeatureGrid grid(sample_pixels, width, height, static_cast<int>(cell));
+  std::vector<int> near_ids;
   std::vector<double> near;
   for (std::size_t i = 0; i < pixels.size(); ++i) {
-    if (!pixels[i].allFinite()) continue;
+    grid.query(pixels[i], radius_px, near_ids);  // nothing for a non-finite pixel
+    if (near_ids.size() < 2) continue;
     near.clear();
-    for (int du = -1; du <= 1; ++du)
-      for (int dv = -1; dv <= 1; ++dv) {
-        const auto it = grid.find(key(pixels[i].x() + du * cell, pixels[i].y() + dv * cell));
-        if (it == grid.end()) continue;
-        for (const visual::PixelDepth* s : it->second)
-          if ((s->pixel - pixels[i]).norm() <= radius_px) near.push_back(s->depth);
-      }
-    if (near.size() < 2) continue;
+    for (const int j : near_ids) near.push_back(sample_depths[j]);
     // The nearest surface wins (points behind it show through by parallax);
     // it needs a second point within 5 % to count as a surface, not a stray.
     std::sort(near.begin(), near.end());

@@ -66,15 +66,18 @@ VisualFrameFeatures VisualWorker::track(visual::ExtractedImage image, double ext
     const Stopwatch depth_watch;
     const std::optional<fusion::CameraMotion> motion = motionFromPrevious(frames_, record.result);
     const double max_dt = motion ? keypoint_depth_max_dt_ : hint_max_dt_;
+    const PinholeCamera& camera = *calibration_.camera;
     slam_.setKeypointDepths(
         fusion::surfaceDepths(fusion::lidarDepthHints(recent_scans_, record.t, calibration_, max_dt, motion),
-                              slam_.keypointPixels(), keypoint_depth_radius_px_));
+                              slam_.keypointPixels(), keypoint_depth_radius_px_, camera.width(), camera.height()));
     record.hints_ms += depth_watch.ms();
   }
   frames_.push_back(std::move(record));
   VisualFrameFeatures features;
   for (const visual::ImageLineSegment& s : slam_.lineSegments()) features.segments.push_back({s.start, s.end});
-  if (!depths_from_scans_ && use_keypoint_depths_ && slam_.currentIsKeyframe()) features.keyframe_keypoints = slam_.keypointPixels();
+  // Fused mode: the fusion framework answers with the keyframe's depths.
+  if (!depths_from_scans_ && use_keypoint_depths_ && slam_.currentIsKeyframe())
+    features.keyframe_keypoints = slam_.keypointPixels();
   return features;
 }
 
