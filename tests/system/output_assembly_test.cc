@@ -175,6 +175,27 @@ TEST(AssembleOutput, VisualModeAnchorsTheSecondMapAtTheLastPoseOfTheFirst) {
   for (std::size_t i = 1; i < out.trajectory.size(); ++i) EXPECT_LT(out.trajectory[i - 1].t, out.trajectory[i].t);
 }
 
+// The lines of an earlier map stay in lines.ply, each map's lines moved
+// into the output world with that map's own anchor.
+TEST(AssembleOutput, LinesOfEveryVisualMapAreMovedWithTheirMapsAnchor) {
+  const Eigen::Isometry3d map1 = expSE3((Vector6d() << -5, 4, 2, 0.6, -0.3, 1.2).finished());
+  PipelineRecords records = twoVisualMaps(Eigen::Isometry3d::Identity(), map1, true);
+  const Eigen::Vector3d A_world(1.0, 2.0, 3.0), B_world(1.5, 2.0, 4.0);
+  records.visual_lines.push_back({A_world, B_world, false, 0});              // map 0's frame is the world
+  records.visual_lines.push_back({map1 * A_world, map1 * B_world, true, 1});  // the same line seen by map 1
+  records.visual_lines.push_back({A_world, B_world, false, 2});              // a map the output never used
+  const SystemOutput out = assembleOutput(records, configFor(RunMode::kVisual), kTCameraLidar);
+  ASSERT_EQ(out.lines_world.size(), 2u);
+  EXPECT_LT((out.lines_world[0].a - A_world).norm(), 1e-9);
+  EXPECT_LT((out.lines_world[0].b - B_world).norm(), 1e-9);
+  EXPECT_EQ(out.lines_world[0].g, 255);  // a visual line: green
+  // Map 1 is anchored at its first view (frame 17), where the output puts it.
+  const Eigen::Isometry3d T_world_map1 = *out.frames[17].T_world_camera * (map1 * trueCamera(frameTime(17))).inverse();
+  EXPECT_LT((out.lines_world[1].a - T_world_map1 * map1 * A_world).norm(), 1e-9);
+  EXPECT_LT((out.lines_world[1].b - T_world_map1 * map1 * B_world).norm(), 1e-9);
+  EXPECT_EQ(out.lines_world[1].g, 160);  // from fusion: orange
+}
+
 TEST(AssembleOutput, VisualModeIsNotMetricWhenAnyMapIsNot) {
   const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
   EXPECT_FALSE(assembleOutput(twoVisualMaps(I, I, false), configFor(RunMode::kVisual), kTCameraLidar).metric);

@@ -11,69 +11,13 @@
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
 #include "lvslam/eval/evaluate.h"
-#include "lvslam/sim/camera_renderer.h"
-#include "lvslam/sim/scenario.h"
 #include "lvslam/visual/tracking/visual_slam.h"
+#include "visual/rendered_room.h"
 
 namespace lvslam::visual {
 namespace {
 
-struct RenderedFrame {
-  ImageFrame image;
-  cv::Mat depth;  // CV_32F, exact
-  Eigen::Isometry3d T_world_camera;
-};
-
-constexpr double kDuration = 4.0;
-
-class VisualSlamTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    sim::SimOptions options;
-    options.scenario = "room";
-    options.duration = kDuration;
-    scenario_ = new sim::Scenario(sim::makeScenario(options));
-    const sim::CameraRenderer renderer(*scenario_);
-    frames_ = new std::vector<RenderedFrame>();
-    for (double t = 0.0; t < kDuration; t += 1.0 / scenario_->camera.rate_hz)
-      frames_->push_back({{t, renderer.renderImage(t)}, renderer.renderDepth(t), scenario_->T_world_camera(t)});
-  }
-  static void TearDownTestSuite() {
-    delete frames_;
-    delete scenario_;
-  }
-
-  // Exact depth on a 4-pixel grid, the stand-in for projected LiDAR points.
-  static std::vector<PixelDepth> depthHints(const cv::Mat& depth) {
-    std::vector<PixelDepth> hints;
-    for (int v = 0; v < depth.rows; v += 4)
-      for (int u = 0; u < depth.cols; u += 4)
-        if (depth.at<float>(v, u) > 0.0f) hints.push_back({{u, v}, depth.at<float>(v, u)});
-    return hints;
-  }
-
-  // Feeds frames [begin, end) and collects the tracked poses.
-  static void run(VisualSlam& slam, size_t begin, size_t end, Trajectory& estimate, Trajectory& truth,
-                  std::vector<VisualFrameResult>* results = nullptr) {
-    for (size_t i = begin; i < end; ++i) {
-      const RenderedFrame& f = (*frames_)[i];
-      if (slam.needsDepthHints()) slam.setDepthHints(depthHints(f.depth));
-      const VisualFrameResult r = slam.track(f.image);
-      if (results) results->push_back(r);
-      if (!r.pose_valid) continue;
-      estimate.push_back({r.timestamp, r.T_world_camera});
-      truth.push_back({r.timestamp, f.T_world_camera});
-    }
-  }
-
-  static const PinholeCamera& camera() { return scenario_->camera.camera; }
-
-  static sim::Scenario* scenario_;
-  static std::vector<RenderedFrame>* frames_;
-};
-
-sim::Scenario* VisualSlamTest::scenario_ = nullptr;
-std::vector<RenderedFrame>* VisualSlamTest::frames_ = nullptr;
+class VisualSlamTest : public testing::RenderedRoomTest {};
 
 TEST_F(VisualSlamTest, InitialisesMetricallyAndTracksWithinCentimetres) {
   VisualSlam slam(VisualSlamConfig{}, camera());

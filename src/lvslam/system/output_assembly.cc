@@ -107,17 +107,20 @@ PlySegment coloured(const Eigen::Vector3d& a, const Eigen::Vector3d& b, unsigned
   return s;
 }
 
-void addLines(const PipelineRecords& records, const std::optional<Eigen::Isometry3d>& T_world_map, SystemOutput& out) {
+void addLines(const PipelineRecords& records, const OutputTrajectory* output, SystemOutput& out) {
   for (std::size_t j = 0; j < records.lidar.size() && j < out.frames.size(); ++j) {
     const auto& T = out.frames[j].T_world_camera;
     if (!T) continue;
     for (const CameraLine& line : records.lidar[j].fusion_lines)
       out.lines_world.push_back(coloured(*T * line.A, *T * line.B, 255, 0));
   }
-  if (!T_world_map) return;
-  for (const MapLine& line : records.visual_lines)
+  if (!output) return;
+  for (const MapLine& line : records.visual_lines) {
+    const auto T_world_map = output->T_world_map(line.map_id);  // a map never in the output: its lines neither
+    if (!T_world_map) continue;
     out.lines_world.push_back(coloured(*T_world_map * line.start, *T_world_map * line.end, line.from_fusion ? 255 : 0,
                                        line.from_fusion ? 160 : 255));
+  }
 }
 
 }  // namespace
@@ -140,23 +143,19 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
                             const Eigen::Isometry3d& T_camera_lidar) {
   SystemOutput out;
   const Eigen::Isometry3d T_lidar_camera = T_camera_lidar.inverse();
-  std::optional<Eigen::Isometry3d> T_world_map;
+  std::optional<OutputTrajectory> output;  // anchors the visual maps (visual and fused modes)
   switch (config.mode) {
     case RunMode::kLidar: lidarOutput(records, T_lidar_camera, out); break;
-    case RunMode::kVisual: {
-      OutputTrajectory output(Eigen::Isometry3d::Identity());  // no LiDAR: nothing to carry
-      visualOutput(records, out, output);
-      T_world_map = output.T_world_map(records.visual_map_id);
+    case RunMode::kVisual:
+      output.emplace(Eigen::Isometry3d::Identity());  // no LiDAR: nothing to carry
+      visualOutput(records, out, *output);
       break;
-    }
-    case RunMode::kFused: {
-      OutputTrajectory output(T_lidar_camera);
-      fusedOutput(records, config, T_lidar_camera, out, output);
-      T_world_map = output.T_world_map(records.visual_map_id);
+    case RunMode::kFused:
+      output.emplace(T_lidar_camera);
+      fusedOutput(records, config, T_lidar_camera, out, *output);
       break;
-    }
   }
-  addLines(records, T_world_map, out);
+  addLines(records, output ? &*output : nullptr, out);
   return out;
 }
 

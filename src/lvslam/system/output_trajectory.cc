@@ -9,6 +9,12 @@ std::optional<Eigen::Isometry3d> OutputTrajectory::lidarIncrement(const FrameEst
   return T_lidar_camera_.inverse() * (last_T_odom_lidar_->inverse() * *frame.T_odom_lidar) * T_lidar_camera_;
 }
 
+std::optional<Eigen::Isometry3d> OutputTrajectory::T_world_map(int map_id) const {
+  const auto it = last_anchors_.find(map_id);
+  if (it == last_anchors_.end()) return std::nullopt;
+  return it->second;
+}
+
 Eigen::Isometry3d OutputTrajectory::add(const FrameEstimates& frame, OutputSource source) {
   const bool first = trajectory_.empty();
   const Eigen::Isometry3d T_prev = first ? Eigen::Isometry3d::Identity() : trajectory_.back().T_world_frame;
@@ -23,6 +29,7 @@ Eigen::Isometry3d OutputTrajectory::add(const FrameEstimates& frame, OutputSourc
       // On the first frame the visual map frame is the world frame.
       T_world_map_ = first ? Eigen::Isometry3d::Identity() : T_world_camera * frame.T_map_camera->inverse();
       anchored_map_id_ = frame.visual_map_id;
+      last_anchors_[anchored_map_id_] = *T_world_map_;
     }
     T_world_camera = *T_world_map_ * *frame.T_map_camera;
   } else if (first && frame.T_odom_lidar) {

@@ -5,6 +5,7 @@
 // chained from the last output pose; back in visual mode the visual map
 // (possibly a new one after re-initialization) is re-anchored at the current
 // output pose, so the trajectory has no jump at a switch.
+#include <map>
 #include <optional>
 
 #include <Eigen/Geometry>
@@ -29,11 +30,9 @@ class OutputTrajectory {
   Eigen::Isometry3d add(const FrameEstimates& frame, OutputSource source);
 
   const Trajectory& trajectory() const { return trajectory_; }
-  // Where the visual map `map_id` sits in the output world, when it is the
-  // map anchored last.
-  std::optional<Eigen::Isometry3d> T_world_map(int map_id) const {
-    return map_id == anchored_map_id_ ? T_world_map_ : std::nullopt;
-  }
+  // Where the visual map `map_id` sits in the output world (its last anchor),
+  // when it was ever anchored.
+  std::optional<Eigen::Isometry3d> T_world_map(int map_id) const;
 
  private:
   std::optional<Eigen::Isometry3d> lidarIncrement(const FrameEstimates& frame) const;
@@ -43,6 +42,7 @@ class OutputTrajectory {
   std::optional<Eigen::Isometry3d> last_T_odom_lidar_;
   std::optional<Eigen::Isometry3d> T_world_map_;  // anchors the current visual map
   int anchored_map_id_ = -1;
+  std::map<int, Eigen::Isometry3d> last_anchors_;  // per visual map id, for its landmarks
   OutputSource last_source_ = OutputSource::kLidar;
 };
 

@@ -188,10 +188,14 @@ PipelineRecords collect(Workers& workers, PipelineRecords records) {
   }
   if (workers.visual) {
     records.visual = workers.visual->frames();
-    const visual::VisualMap& map = workers.visual->slam().map();
-    for (const auto& [id, line] : map.lines())
-      if (!line.bad) records.visual_lines.push_back({line.start_world, line.end_world, line.from_fusion});
-    records.visual_map_id = workers.visual->slam().mapId();
+    const visual::VisualSlam& slam = workers.visual->slam();
+    const auto addLines = [&records](const visual::VisualMap& map, int map_id) {
+      for (const auto& [id, line] : map.lines())
+        if (!line.bad) records.visual_lines.push_back({line.start_world, line.end_world, line.from_fusion, map_id});
+    };
+    for (std::size_t id = 0; id < slam.retiredMaps().size(); ++id)
+      addLines(slam.retiredMaps()[id], static_cast<int>(id));
+    addLines(slam.map(), slam.mapId());
   }
   return records;
 }

@@ -16,10 +16,11 @@
 
 namespace lvslam::system {
 
-// A 3D line of the visual map, in its map frame.
+// A 3D line of a visual map, in that map's frame.
 struct MapLine {
   Eigen::Vector3d start = Eigen::Vector3d::Zero(), end = Eigen::Vector3d::Zero();
   bool from_fusion = false;
+  int map_id = 0;
 };
 
 struct PipelineRecords {
@@ -28,8 +29,7 @@ struct PipelineRecords {
   std::vector<ScanRecord> scans;
   Trajectory T_odom_lidar_scans;          // at scan times
   std::vector<PlyPoint> lidar_map;        // odometry world frame
-  std::vector<MapLine> visual_lines;      // the last visual map's lines
-  int visual_map_id = -1;                 // ... and its id
+  std::vector<MapLine> visual_lines;      // the lines of every visual map, old and current
   std::size_t images = 0, scans_read = 0;  // as read from the source
   double first_time = 0.0, last_time = 0.0;  // of the sensor data
 };

@@ -88,6 +88,7 @@ struct VisualSlam::Impl {
 
   VisualMap map;
   int map_id = 0;
+  std::vector<VisualMap> retired_maps;  // index = map id: the maps given up after a loss
   TrackingState state = TrackingState::kInitializing;
   int frame_index = -1;
   TrackedFrame current;
@@ -322,6 +323,7 @@ void VisualSlam::Impl::loseTracking() {
 }
 
 void VisualSlam::Impl::newMap() {
+  retired_maps.push_back(std::move(map));
   map = VisualMap();
   mapper.reset();
   fusion_lines.clear();
@@ -393,6 +395,7 @@ bool VisualSlam::needsDepthHints() const { return impl_->state != TrackingState:
 TrackingState VisualSlam::state() const { return impl_->state; }
 int VisualSlam::mapId() const { return impl_->map_id; }
 const VisualMap& VisualSlam::map() const { return impl_->map; }
+const std::vector<VisualMap>& VisualSlam::retiredMaps() const { return impl_->retired_maps; }
 
 std::vector<ImageLineSegment> VisualSlam::lineSegments() const {
   std::vector<ImageLineSegment> out;

@@ -5,7 +5,8 @@
 // keyframes run the local mapper in the same thread (deterministic). When
 // tracking is lost it first retries against the old map from the last pose
 // with a wide window, then starts a new map (new mapId()) and re-initialises,
-// metric when depth hints are given.
+// metric when depth hints are given. The maps given up are kept
+// (retiredMaps()), each in its own world frame.
 //
 // Fusion face: setDepthHints() before track() for a metric start,
 // lineSegments() of the current frame and addFusionLine() after track().
@@ -148,7 +149,9 @@ class VisualSlam {
 
   TrackingState state() const;
   int mapId() const;
-  const VisualMap& map() const;
+  const VisualMap& map() const;  // the current map, id mapId()
+  // The earlier maps, index = map id (retiredMaps().size() == mapId()).
+  const std::vector<VisualMap>& retiredMaps() const;
 
  private:
   struct Impl;
