@@ -265,6 +265,35 @@ void expectStepsFollowTheSource(const PipelineRecords& records, const SystemOutp
   }
 }
 
+// Each subsystem's own estimate is kept apart from the output: the visual
+// poses per map in that map's frame (first view included), and the LiDAR
+// odometry carried to the camera at every frame it has a pose.
+TEST(AssembleOutput, FusedKeepsEachSubsystemsOwnTrajectory) {
+  FusedScenario s = blackoutScenario(40);
+  s.records.visual[30].result.initial_reference = StampedPose{frameTime(27), Eigen::Isometry3d::Identity()};
+  s.records.lidar[5].T_odom_lidar.reset();  // a frame the LiDAR has no pose for
+  const SystemOutput out = assembleOutput(s.records, configFor(RunMode::kFused), kTCameraLidar);
+  ASSERT_EQ(out.visual_maps.size(), 2u);
+  const Trajectory& map0 = out.visual_maps.at(0);
+  const Trajectory& map1 = out.visual_maps.at(1);
+  ASSERT_EQ(map0.size(), s.blackout_begin);
+  ASSERT_EQ(map1.size(), 40 - s.blackout_end + 1);
+  for (std::size_t j = 0; j < s.blackout_begin; ++j) {
+    EXPECT_EQ(map0[j].t, frameTime(j));
+    EXPECT_TRUE(map0[j].T_world_frame.isApprox(s.records.visual[j].result.T_world_camera, 1e-12)) << j;
+  }
+  EXPECT_EQ(map1.front().t, frameTime(27));  // the first view, before the frame that initialised the map
+  EXPECT_TRUE(map1.front().T_world_frame.isApprox(Eigen::Isometry3d::Identity(), 1e-12));
+  EXPECT_TRUE(map1.back().T_world_frame.isApprox(s.records.visual[39].result.T_world_camera, 1e-12));
+  ASSERT_EQ(out.lidar_camera.size(), 39u);
+  for (const StampedPose& p : out.lidar_camera) {
+    EXPECT_NE(p.t, frameTime(5));
+    EXPECT_LT(translationDiff(p.T_world_frame, kTOdomWorld * trueCamera(p.t)), 1e-9) << p.t;
+  }
+  // Visual mode has no LiDAR trajectory of its own.
+  EXPECT_TRUE(assembleOutput(s.records, configFor(RunMode::kVisual), kTCameraLidar).lidar_camera.empty());
+}
+
 TEST(AssembleOutput, FusedUsesVisionOnlyAfterFramesToRecoverHealthyAgreeingFrames) {
   FusedScenario s = blackoutScenario(20);
   SystemConfig config = configFor(RunMode::kFused);

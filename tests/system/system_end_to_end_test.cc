@@ -203,7 +203,8 @@ TEST(SystemEndToEnd, BlackoutSwitchesToLidarAndBackDeterministically) {
   write("det1", det1.result);
   write("det2", det2.result);
   write("threaded", threaded.result);
-  for (const char* file : {"trajectory.tum", "stats.json", "map.ply", "lines.ply"}) {
+  for (const char* file : {"trajectory.tum", "stats.json", "map.ply", "lines.ply", "subsystems/visual_map_0.tum",
+                           "subsystems/lidar_camera.tum"}) {
     const std::string reference = fileText(dir.path() / "det1" / file);
     EXPECT_FALSE(reference.empty()) << file;
     EXPECT_TRUE(reference == fileText(dir.path() / "det2" / file)) << file << " differs between deterministic runs";

@@ -123,6 +123,21 @@ void addLines(const PipelineRecords& records, const OutputTrajectory* output, Sy
   }
 }
 
+// The subsystems' own trajectories (SystemOutput::visual_maps, lidar_camera).
+void addSubsystemTrajectories(const PipelineRecords& records, RunMode mode, const Eigen::Isometry3d& T_lidar_camera,
+                              SystemOutput& out) {
+  for (const VisualFrameRecord& v : records.visual) {
+    const auto& r = v.result;
+    if (!r.pose_valid) continue;
+    Trajectory& map = out.visual_maps[r.map_id];
+    if (r.initial_reference) map.push_back(*r.initial_reference);  // the map's first view, an earlier frame
+    map.push_back({v.t, r.T_world_camera});
+  }
+  if (mode != RunMode::kFused) return;
+  for (const LidarFrameRecord& l : records.lidar)
+    if (l.T_odom_lidar) out.lidar_camera.push_back({l.t, *l.T_odom_lidar * T_lidar_camera});
+}
+
 }  // namespace
 
 VisualHealth healthOf(const VisualFrameRecord& record) {
@@ -156,6 +171,7 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
       break;
   }
   addLines(records, output ? &*output : nullptr, out);
+  addSubsystemTrajectories(records, config.mode, T_lidar_camera, out);
   return out;
 }
 

@@ -3,6 +3,7 @@
 // in time order (each decision uses only that frame and earlier ones, as an
 // online system would): the detection module picks the visual or the LiDAR
 // odometry, OutputTrajectory keeps the trajectory continuous across switches.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,11 @@ struct SystemOutput {
   std::vector<FrameOutput> frames;  // per camera frame
   std::vector<SwitchEvent> switches;
   std::vector<PlySegment> lines_world;  // fusion lines (red) and the visual map's lines (green; orange from fusion)
+  // Each subsystem's own estimate, before the detection module chose: the
+  // visual subsystem's T_map_camera per map id (in that map's frame), and the
+  // LiDAR odometry carried to the camera (T_odom_camera, fused mode).
+  std::map<int, Trajectory> visual_maps;
+  Trajectory lidar_camera;
 };
 
 SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& config,

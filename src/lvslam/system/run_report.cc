@@ -183,6 +183,14 @@ void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records,
   std::filesystem::create_directories(dir, ec);
   if (ec) throw Error(out_dir, "cannot create the output folder: " + ec.message());
   writeTum((dir / "trajectory.tum").string(), output.trajectory);
+  if (!output.visual_maps.empty() || !output.lidar_camera.empty()) {
+    const std::filesystem::path own = dir / "subsystems";
+    std::filesystem::create_directories(own, ec);
+    if (ec) throw Error(own.string(), "cannot create the folder: " + ec.message());
+    for (const auto& [id, poses] : output.visual_maps)
+      writeTum((own / fmt::format("visual_map_{}.tum", id)).string(), poses);
+    if (!output.lidar_camera.empty()) writeTum((own / "lidar_camera.tum").string(), output.lidar_camera);
+  }
   std::vector<std::string> frames, scans, switches;
   for (std::size_t j = 0; j < output.frames.size(); ++j) frames.push_back(frameJson(records, output, j, with_timings));
   for (const ScanRecord& s : records.scans) scans.push_back(scanJson(s, with_timings));

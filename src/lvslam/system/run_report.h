@@ -1,8 +1,8 @@
 #pragma once
 // What a run hands the user: trajectory.tum, stats.json (per frame and per
 // scan: stage times, subsystem in use, features, fusion lines), map.ply (the
-// LiDAR map), lines.ply (the 3D line map) and a summary of figures that the
-// CLI prints and `lvslam bench` tabulates.
+// LiDAR map), lines.ply (the 3D line map), the subsystems' own trajectories
+// and a summary of figures that the CLI prints and `lvslam bench` tabulates.
 #include <map>
 #include <optional>
 #include <string>
@@ -39,7 +39,9 @@ RunSummary summarize(const PipelineRecords& records, const SystemOutput& output,
 // Several lines for the terminal, ending in a newline.
 std::string formatRunSummary(const RunSummary& summary, const SystemOutput& output);
 
-// Writes the four files into out_dir (created). Without timings (for
+// Writes the four files into out_dir (created), and the subsystems' own
+// trajectories into out_dir/subsystems: visual_map_<id>.tum (T_map_camera in
+// the frame of visual map <id>) and, in fused mode, lidar_camera.tum. Without timings (for
 // --deterministic) stats.json has no wall-clock figures, so runs compare byte for byte.
 // The accuracy, when given, goes into the summary of stats.json.
 void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records, const SystemOutput& output,
