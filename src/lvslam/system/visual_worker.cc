@@ -26,6 +26,19 @@ std::optional<fusion::CameraMotion> motionFromPrevious(const std::vector<VisualF
   return fusion::CameraMotion{before.timestamp, now.T_world_camera.inverse() * before.T_world_camera};
 }
 
+// Visual mode's keyframe depths are raw points, deskewed to the image time:
+// good enough to make points straight from them (ORB-SLAM2's RGB-D close
+// points), which keeps tracking alive through turns where two-view
+// triangulation lacks parallax (60 s hall: lost at 21.5 s and 1.74 m without,
+// one map and 4.7 cm with). The fusion framework's depths from accumulated
+// features are not (fused room 4.8 -> 7.6 cm): fused mode keeps them to BA
+// depth terms (docs/benchmarks.md, "Points from keyframe depths").
+visual::VisualSlamConfig visualSlamConfig(const SystemConfig& config, bool depths_from_scans) {
+  visual::VisualSlamConfig c = config.visual;
+  c.triangulation.create_depth_points = depths_from_scans;
+  return c;
+}
+
 }  // namespace
 
 VisualWorker::VisualWorker(const SystemConfig& config, const Calibration& calibration, bool has_lidar)
@@ -37,7 +50,7 @@ VisualWorker::VisualWorker(const SystemConfig& config, const Calibration& calibr
       depths_from_scans_(has_lidar && config.mode == RunMode::kVisual && config.visual.visual.use_keypoint_depths),
       keypoint_depth_radius_px_(config.keypoint_depth_radius_px),
       keypoint_depth_max_dt_(config.keypoint_depth_max_dt),
-      slam_(config.visual, requireCamera(calibration)) {}
+      slam_(visualSlamConfig(config, depths_from_scans_), requireCamera(calibration)) {}
 
 void VisualWorker::addScan(std::shared_ptr<const LidarScan> scan) {
   recent_scans_.push_back(std::move(scan));
