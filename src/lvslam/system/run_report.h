@@ -41,8 +41,9 @@ std::string formatRunSummary(const RunSummary& summary, const SystemOutput& outp
 
 // Writes the four files into out_dir (created), and the subsystems' own
 // trajectories into out_dir/subsystems: visual_map_<id>.tum (T_map_camera in
-// the frame of visual map <id>) and, in fused mode, lidar_camera.tum. Without timings (for
-// --deterministic) stats.json has no wall-clock figures, so runs compare byte for byte.
+// the frame of visual map <id>) and, in fused mode, lidar_camera.tum. Without
+// timings (for --deterministic) stats.json has no wall-clock figures, so runs
+// compare byte for byte.
 // The accuracy, when given, goes into the summary of stats.json.
 void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records, const SystemOutput& output,
                      const RunSummary& summary, const std::optional<eval::EvalResult>& accuracy, bool with_timings);

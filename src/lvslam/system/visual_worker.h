@@ -3,7 +3,7 @@
 // subsystem, fed with LiDAR depth hints for a metric start (from the latest
 // raw scans); in fused mode with the fusion lines of each frame and the
 // fusion framework's depths for keyframe points, in visual mode with keyframe
-// depths from the raw scans.
+// depths from the raw scans (and points made from them).
 #include <memory>
 #include <vector>
 
