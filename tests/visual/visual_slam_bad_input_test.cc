@@ -289,6 +289,31 @@ TEST_F(VisualSlamBadInputTest, AJumpPastTheRelocalisationWindowStartsANewMetricM
   expectNewMetricMap(results, after, after_truth, 1);
 }
 
+// Frames missing from the recording (dropped, not spoilt): the next one comes
+// several frame intervals later, and the motion model carries the camera
+// over all of them, so tracking goes on in the same map.
+TEST_F(VisualSlamBadInputTest, DroppedFramesAreBridgedByTheMotionModel) {
+  for (const size_t dropped : {3u, 6u}) {
+    SCOPED_TRACE(std::to_string(dropped) + " frames dropped");
+    VisualSlam slam(VisualSlamConfig{}, camera());
+    Trajectory before, before_truth;
+    run(slam, 0, kBadBegin, before, before_truth);
+    ASSERT_EQ(slam.state(), TrackingState::kTracking);
+    std::vector<VisualFrameResult> after;
+    Trajectory after_estimate, after_truth;
+    run(slam, kBadBegin + dropped, frames_->size(), after_estimate, after_truth, &after);
+    ASSERT_FALSE(after.empty());
+    for (const VisualFrameResult& r : after) {
+      EXPECT_TRUE(r.pose_valid);
+      EXPECT_EQ(r.map_id, 0);
+    }
+    const eval::EvalResult accuracy =
+        se3Accuracy(joined(before_truth, after_truth), joined(before, after_estimate));
+    EXPECT_LT(accuracy.ate.stats.rmse, 0.05);
+    EXPECT_LT(accuracy.ate.stats.max, 0.1);
+  }
+}
+
 // Ten unusable frames of every kind, far past config.relocalize_frames: the
 // map stays as it was, since there is nothing to relocalise with; the first
 // usable frame starts map 1, and map 0 is kept as it was.

@@ -4,12 +4,10 @@
 
 namespace lvslam::visual {
 
-std::vector<Eigen::Isometry3d> relocalizationGuesses(const VisualMap& map, const Eigen::Isometry3d& T_last,
-                                                     const Eigen::Isometry3d& velocity, int lost_frames,
-                                                     int reference_keyframe, std::size_t neighbours) {
-  Eigen::Isometry3d extrapolated = T_last;
-  for (int i = 0; i <= lost_frames; ++i) extrapolated = velocity * extrapolated;
-  std::vector<Eigen::Isometry3d> guesses{extrapolated, T_last};
+std::vector<Eigen::Isometry3d> relocalizationGuesses(const VisualMap& map, const Eigen::Isometry3d& T_extrapolated,
+                                                     const Eigen::Isometry3d& T_last, int reference_keyframe,
+                                                     std::size_t neighbours) {
+  std::vector<Eigen::Isometry3d> guesses{T_extrapolated, T_last};
   if (!map.hasKeyframe(reference_keyframe)) return guesses;
   guesses.push_back(map.keyframe(reference_keyframe).T_camera_world);
   for (const int kf : map.covisibility().bestNeighbours(reference_keyframe, neighbours))

@@ -14,12 +14,13 @@
 
 namespace lvslam::visual {
 
-// The guesses, most likely first: the constant-velocity motion carried over
-// the lost frames from the last pose, the last pose, the reference keyframe's
-// pose and those of its `neighbours` best covisible keyframes.
-std::vector<Eigen::Isometry3d> relocalizationGuesses(const VisualMap& map, const Eigen::Isometry3d& T_last,
-                                                     const Eigen::Isometry3d& velocity, int lost_frames,
-                                                     int reference_keyframe, std::size_t neighbours);
+// The guesses, most likely first: the motion model's pose for this frame
+// (T_extrapolated: the last pose carried over the time lost), the last pose,
+// the reference keyframe's pose and those of its `neighbours` best covisible
+// keyframes.
+std::vector<Eigen::Isometry3d> relocalizationGuesses(const VisualMap& map, const Eigen::Isometry3d& T_extrapolated,
+                                                     const Eigen::Isometry3d& T_last, int reference_keyframe,
+                                                     std::size_t neighbours);
 
 // Tracks `frame` against `local` from each guess in turn (first window
 // `radius_scale` times the usual); the first result with at least

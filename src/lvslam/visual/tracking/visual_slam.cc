@@ -10,6 +10,7 @@
 #include "lvslam/visual/optimize/solver_logging.h"
 #include "lvslam/visual/tracking/frame_tracker.h"
 #include "lvslam/visual/tracking/local_keyframes.h"
+#include "lvslam/visual/tracking/motion_model.h"
 #include "lvslam/visual/tracking/relocalization.h"
 
 namespace lvslam::visual {
@@ -106,7 +107,8 @@ struct VisualSlam::Impl {
   bool metric = false;
   // Tracking.
   Eigen::Isometry3d T_last = Eigen::Isometry3d::Identity();  // T_camera_world of the last tracked frame
-  Eigen::Isometry3d velocity = Eigen::Isometry3d::Identity();  // T_last * T_before^-1
+  ConstantVelocity motion;  // velocity = T_last * T_before^-1
+  double last_time = 0.0;   // of T_last
   int reference_keyframe = -1;
   int last_keyframe_frame = 0;
   int reference_tracked_keyframe = -1, reference_tracked_points = 0;  // points tracked when it was inserted
@@ -229,7 +231,8 @@ void VisualSlam::Impl::initialize(const std::vector<PixelDepth>& hints, VisualFr
   result.inlier_ratio = static_cast<double>(init->num_triangulated) / std::max<size_t>(1, pairs.size());
   // Constant velocity per frame: the initial motion spread over its frames.
   const int frames = std::max(1, frame_index - reference_frame);
-  velocity = expSE3(logSE3(k2.T_camera_world) / frames);
+  motion = {expSE3(logSE3(k2.T_camera_world) / frames), (current.features.timestamp - reference_time) / frames};
+  last_time = current.features.timestamp;
   T_last = k2.T_camera_world;
   last_points = observedLandmarks(k2.point_landmark);
   reference_keyframe = built->keyframe2;
@@ -257,7 +260,8 @@ std::vector<int> VisualSlam::Impl::pendingFusionLines() {
 bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
   if (!map.hasKeyframe(reference_keyframe)) return false;
   LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.visual.local_map);
-  const Eigen::Isometry3d T_predicted = velocity * T_last;
+  const double now = current.features.timestamp;
+  const Eigen::Isometry3d T_predicted = predictPose(motion, T_last, now - last_time);
   const double radius = config.visual.local_map.nearby_radius_depths * medianSceneDepth(map, reference_keyframe);
   for (const int kf : nearbyKeyframes(map, T_predicted, radius, keyframes.keyframes, config.visual.local_map))
     keyframes.keyframes.push_back(kf);
@@ -270,7 +274,8 @@ bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
   last_points = observedLandmarks(current.point_landmark);
   mapper.countTracking(tracked.visible_points, last_points, tracked.visible_lines,
                        observedLandmarks(current.line_landmark));
-  velocity = current.T_camera_world * T_last.inverse();
+  motion = {current.T_camera_world * T_last.inverse(), now - last_time};
+  last_time = now;
   T_last = current.T_camera_world;
   current_has_pose = true;
   lost_frames = 0;
@@ -338,14 +343,16 @@ void VisualSlam::Impl::newMap() {
 // Relocalisation into the old map (tracking/relocalization.h).
 bool VisualSlam::Impl::relocalize(VisualFrameResult& result) {
   const std::vector<Eigen::Isometry3d> guesses =
-      relocalizationGuesses(map, T_last, velocity, lost_frames, reference_keyframe, config.relocalize_candidates);
+      relocalizationGuesses(map, predictPose(motion, T_last, current.features.timestamp - last_time), T_last,
+                            reference_keyframe, config.relocalize_candidates);
   const LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.visual.local_map);
   const LocalMap local = collectLocalMap(map, keyframes.keyframes, {});
   const std::optional<FrameTrackingResult> tracked = relocalizeFrame(
       map, local, guesses, K, config.recovery_radius_scale, config.relocalize_min_inliers, tracker, current);
   if (!tracked) return false;
   state = TrackingState::kTracking;
-  velocity = Eigen::Isometry3d::Identity();
+  motion = ConstantVelocity{};
+  last_time = current.features.timestamp;
   T_last = current.T_camera_world;
   current_has_pose = true;
   lost_frames = 0;
