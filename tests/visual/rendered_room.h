@@ -11,6 +11,7 @@
 
 #include "lvslam/core/image_frame.h"
 #include "lvslam/core/trajectory.h"
+#include "lvslam/eval/evaluate.h"
 #include "lvslam/sim/camera_renderer.h"
 #include "lvslam/sim/scenario.h"
 #include "lvslam/visual/tracking/visual_slam.h"
@@ -65,6 +66,13 @@ class RenderedRoomTest : public ::testing::Test {
   }
 
   static const PinholeCamera& camera() { return scenario_->camera.camera; }
+
+  // ATE after an SE3 alignment: the maps are metric, no scale correction.
+  static eval::EvalResult se3Accuracy(const Trajectory& truth, const Trajectory& estimate) {
+    eval::EvalOptions options;
+    options.alignment = eval::Alignment::kSE3;
+    return eval::evaluate(truth, estimate, options);
+  }
 
   inline static std::unique_ptr<sim::Scenario> scenario_;
   inline static std::unique_ptr<std::vector<RenderedFrame>> frames_;

@@ -61,12 +61,6 @@ void expectSameMap(const VisualMap& now, const VisualMap& kept) {
   }
 }
 
-eval::EvalResult se3Accuracy(const Trajectory& truth, const Trajectory& estimate) {
-  eval::EvalOptions options;
-  options.alignment = eval::Alignment::kSE3;  // metric: no scale correction
-  return eval::evaluate(truth, estimate, options);
-}
-
 // Largest distance between an estimated position, moved by T_gt_est, and the truth.
 double maxTranslationError(const eval::Similarity3& T_gt_est, const Trajectory& estimate, const Trajectory& truth) {
   double worst = 0.0;

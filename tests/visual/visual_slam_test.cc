@@ -34,10 +34,7 @@ TEST_F(VisualSlamTest, InitialisesMetricallyAndTracksWithinCentimetres) {
   EXPECT_GT(results.back().tracked_points, 50);
   EXPECT_GT(slam.map().keyframes().size(), 2u);
   EXPECT_GT(slam.map().lines().size(), 0u);
-  eval::EvalOptions options;
-  options.alignment = eval::Alignment::kSE3;  // metric: no scale correction
-  const eval::EvalResult accuracy = eval::evaluate(truth, estimate, options);
-  EXPECT_LT(accuracy.ate.stats.rmse, 0.05);
+  EXPECT_LT(se3Accuracy(truth, estimate).ate.stats.rmse, 0.05);
   // The path is long enough that a wrong scale would show in the ATE.
   const double path = (truth.back().T_world_frame.translation() - truth.front().T_world_frame.translation()).norm();
   EXPECT_GT(path, 0.5);
@@ -65,9 +62,7 @@ TEST_F(VisualSlamTest, BlackFramesLoseTrackingThenANewMapStarts) {
   EXPECT_EQ(slam.state(), TrackingState::kTracking);
   EXPECT_EQ(slam.mapId(), 1);
   ASSERT_GE(after.size(), 5u);
-  eval::EvalOptions options;
-  options.alignment = eval::Alignment::kSE3;
-  EXPECT_LT(eval::evaluate(after_truth, after, options).ate.stats.rmse, 0.05);
+  EXPECT_LT(se3Accuracy(after_truth, after).ate.stats.rmse, 0.05);
 }
 
 // A short blackout while the camera keeps moving: the frame is relocalised
@@ -94,9 +89,7 @@ TEST_F(VisualSlamTest, ABlackoutIsRelocalisedIntoTheOldMap) {
   // One world frame before and after: a single SE3 alignment fits both parts.
   for (const StampedPose& p : after) estimate.push_back(p);
   for (const StampedPose& p : after_truth) truth.push_back(p);
-  eval::EvalOptions options;
-  options.alignment = eval::Alignment::kSE3;
-  const eval::EvalResult accuracy = eval::evaluate(truth, estimate, options);
+  const eval::EvalResult accuracy = se3Accuracy(truth, estimate);
   EXPECT_LT(accuracy.ate.stats.rmse, 0.05);
   EXPECT_LT(accuracy.ate.stats.max, 0.1);
 }

@@ -10,8 +10,8 @@ std::optional<Eigen::Isometry3d> OutputTrajectory::lidarIncrement(const FrameEst
 }
 
 std::optional<Eigen::Isometry3d> OutputTrajectory::T_world_map(int map_id) const {
-  const auto it = last_anchors_.find(map_id);
-  if (it == last_anchors_.end()) return std::nullopt;
+  const auto it = anchors_.find(map_id);
+  if (it == anchors_.end()) return std::nullopt;
   return it->second;
 }
 
@@ -23,15 +23,15 @@ Eigen::Isometry3d OutputTrajectory::add(const FrameEstimates& frame, OutputSourc
   if (const auto inc = lidarIncrement(frame)) T_world_camera = T_prev * *inc;
 
   if (source == OutputSource::kVisual && frame.T_map_camera) {
-    const bool reanchor = !T_world_map_ || anchored_map_id_ != frame.visual_map_id ||
-                          last_source_ != OutputSource::kVisual;
+    // anchored_map_id_ starts at -1, which no map has: the first visual frame anchors.
+    const bool reanchor = anchored_map_id_ != frame.visual_map_id || last_source_ != OutputSource::kVisual;
     if (reanchor) {
       // On the first frame the visual map frame is the world frame.
-      T_world_map_ = first ? Eigen::Isometry3d::Identity() : T_world_camera * frame.T_map_camera->inverse();
+      anchors_[frame.visual_map_id] =
+          first ? Eigen::Isometry3d::Identity() : T_world_camera * frame.T_map_camera->inverse();
       anchored_map_id_ = frame.visual_map_id;
-      last_anchors_[anchored_map_id_] = *T_world_map_;
     }
-    T_world_camera = *T_world_map_ * *frame.T_map_camera;
+    T_world_camera = anchors_.at(anchored_map_id_) * *frame.T_map_camera;
   } else if (first && frame.T_odom_lidar) {
     // LiDAR from the start: the odometry frame, carried to the camera.
     T_world_camera = *frame.T_odom_lidar * T_lidar_camera_;

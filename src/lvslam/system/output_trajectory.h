@@ -40,9 +40,8 @@ class OutputTrajectory {
   Eigen::Isometry3d T_lidar_camera_;
   Trajectory trajectory_;
   std::optional<Eigen::Isometry3d> last_T_odom_lidar_;
-  std::optional<Eigen::Isometry3d> T_world_map_;  // anchors the current visual map
-  int anchored_map_id_ = -1;
-  std::map<int, Eigen::Isometry3d> last_anchors_;  // per visual map id, for its landmarks
+  std::map<int, Eigen::Isometry3d> anchors_;  // T_world_map per visual map id, its last anchor
+  int anchored_map_id_ = -1;                   // the map anchored last
   OutputSource last_source_ = OutputSource::kLidar;
 };
 
