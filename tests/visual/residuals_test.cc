@@ -158,14 +158,16 @@ TEST(PointDepthCost, WhitenedDepthErrorAndJacobiansMatch) {
   const Eigen::Vector3d p_w = T.inverse() * p_c;
   std::vector<double> pose = poseVector(T), point(p_w.data(), p_w.data() + 3);
   const double* params[] = {pose.data(), point.data()};
-  double r = 1.0;
+  double r[2] = {1.0, 1.0};
   const PointDepthCost exact(3.5, 1.0 / (0.02 * 3.5));
-  ASSERT_TRUE(exact.Evaluate(params, &r, nullptr));
-  EXPECT_NEAR(r, 0.0, 1e-9);
+  ASSERT_TRUE(exact.Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[0], 0.0, 1e-9);
+  EXPECT_EQ(r[1], 0.0);  // the padding row (Ceres' 2-row Schur kernels)
   // LiDAR says 3.4 m with sigma 0.068 m: (3.5 - 3.4) / 0.068.
   const PointDepthCost off(3.4, 1.0 / (0.02 * 3.4));
-  ASSERT_TRUE(off.Evaluate(params, &r, nullptr));
-  EXPECT_NEAR(r, 0.1 / 0.068, 1e-9);
+  ASSERT_TRUE(off.Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[0], 0.1 / 0.068, 1e-9);
+  EXPECT_EQ(r[1], 0.0);
   const Se3LeftManifold pose_m;
   const ceres::EuclideanManifold<3> point_m;
   expectTangentJacobianMatchesNumeric(off, {pose, point}, {&pose_m, &point_m}, 1e-6);
@@ -177,7 +179,7 @@ TEST(PointDepthCost, WhitenedDepthErrorAndJacobiansMatch) {
   const Eigen::Vector3d behind = T.inverse() * Eigen::Vector3d(0.7, -0.4, -3.5);
   std::vector<double> point_behind(behind.data(), behind.data() + 3);
   const double* params_behind[] = {pose.data(), point_behind.data()};
-  EXPECT_FALSE(exact.Evaluate(params_behind, &r, nullptr));
+  EXPECT_FALSE(exact.Evaluate(params_behind, r, nullptr));
 }
 
 TEST(PosePriorCost, ZeroAtThePriorWhitenedErrorsAndJacobiansMatch) {

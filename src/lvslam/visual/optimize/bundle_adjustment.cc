@@ -2,10 +2,12 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
+#include <ceres/ordered_groups.h>
 #include <ceres/problem.h>
 #include <ceres/solver.h>
 
@@ -90,7 +92,10 @@ Blocks makeBlocks(const BundleAdjustmentProblem& p) {
 
 ceres::Solver::Options solverOptions(const BundleAdjustmentConfig& config, int iterations) {
   ceres::Solver::Options o;
-  o.linear_solver_type = ceres::DENSE_SCHUR;  // few keyframes in a local window
+  o.linear_solver_type = ceres::SPARSE_SCHUR;  // lines join the poses in the reduced system
+  // Eigen's sparse Cholesky: as fast as CHOLMOD on these small reduced
+  // systems (docs/benchmarks.md), with no BLAS threads beside ours.
+  o.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
   o.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
   o.max_num_iterations = iterations;
   o.num_threads = config.num_threads;
@@ -131,7 +136,9 @@ class CeresBundleAdjustment {
 
   ceres::Solver::Summary solve(int iterations) {
     ceres::Solver::Summary summary;
-    ceres::Solve(solverOptions(config_, iterations), &problem_, &summary);
+    ceres::Solver::Options options = solverOptions(config_, iterations);
+    options.linear_solver_ordering = eliminationOrdering();
+    ceres::Solve(options, &problem_, &summary);
     return summary;
   }
 
@@ -236,6 +243,24 @@ class CeresBundleAdjustment {
       problem_.SetManifold(b_.lines[j].data(), &line_manifold_);
       if (p_.lines[j].fixed) problem_.SetParameterBlockConstant(b_.lines[j].data());
     }
+  }
+
+  // Points are eliminated first, poses and lines form the reduced system.
+  // Ceres' own choice also eliminates the lines, and the mixed block sizes
+  // then run its generic Schur kernels; with points alone it uses the
+  // fixed-size <2, 3, 6> ones. Null (automatic) when no point takes part.
+  // Ceres orders a group by address: poses and lines get a group each, since
+  // their two vectors lie in the heap in no fixed order (--deterministic).
+  std::shared_ptr<ceres::ParameterBlockOrdering> eliminationOrdering() {
+    auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+    for (size_t j = 0; j < b_.points.size(); ++j)
+      if (point_used_[j]) ordering->AddElementToGroup(b_.points[j].data(), 0);
+    if (ordering->NumElements() == 0) return nullptr;
+    for (size_t k = 0; k < b_.poses.size(); ++k)
+      if (pose_used_[k]) ordering->AddElementToGroup(b_.poses[k].data(), 1);
+    for (size_t j = 0; j < b_.lines.size(); ++j)
+      if (line_used_[j]) ordering->AddElementToGroup(b_.lines[j].data(), 2);
+    return ordering;
   }
 
   void classify(std::vector<ceres::ResidualBlockId>& ids, std::vector<bool>& inlier, double chi2) {

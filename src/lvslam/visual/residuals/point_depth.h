@@ -30,8 +30,10 @@ struct PointDepth {
   }
 };
 
-// Blocks: pose [t, q] (Se3LeftManifold convention), point p_w (3).
-class PointDepthCost final : public ceres::SizedCostFunction<1, kPoseBlockSize, 3> {
+// Blocks: pose [t, q] (Se3LeftManifold convention), point p_w (3). Two rows,
+// the second always 0: with every point row 2 high, Ceres' Schur elimination
+// uses its fixed-size <2, 3, 6> kernels instead of the dynamic ones.
+class PointDepthCost final : public ceres::SizedCostFunction<2, kPoseBlockSize, 3> {
  public:
   PointDepthCost(double depth, double inv_sigma) : depth_(depth), inv_sigma_(inv_sigma) {}
 
@@ -46,8 +48,17 @@ class PointDepthCost final : public ceres::SizedCostFunction<1, kPoseBlockSize, 
                               want_pose ? &J_pose : nullptr, want_point ? &J_point : nullptr)) {
       return false;
     }
-    if (want_pose) writePoseJacobian(J_pose, jacobians[0]);
-    if (want_point) Eigen::Map<Eigen::Matrix<double, 1, 3>>{jacobians[1]} = J_point;
+    residuals[1] = 0.0;
+    if (want_pose) {
+      Eigen::Matrix<double, 2, 6> J = Eigen::Matrix<double, 2, 6>::Zero();
+      J.row(0) = J_pose;
+      writePoseJacobian(J, jacobians[0]);
+    }
+    if (want_point) {
+      Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>> J{jacobians[1]};
+      J.row(0) = J_point;
+      J.row(1).setZero();
+    }
     return true;
   }
 
