@@ -129,5 +129,31 @@ TEST(LidarOdometry, TimeGoingBackIsRejectedAndAJumpDoesNotDiverge) {
   EXPECT_LT((before.inverse() * far.T_world_lidar).translation().norm(), 0.1);
 }
 
+// Kidnapped: the scans come from 2.4 m further on, out of reach of a local
+// registration. Lost, lost, then the map restarts from the third at its
+// predicted pose, and the scans after it are tracked again: relative motion
+// right, even though the absolute pose kept the gap.
+TEST(LidarOdometry, AMapTheScansNoLongerMatchRestartsAfterThreeLosses) {
+  AfterGoodScans run;
+  ASSERT_EQ(LidarOdometryConfig{}.registration.restart_after_lost, 3);
+  std::vector<OdometryStatus> statuses;
+  std::vector<Eigen::Isometry3d> poses;
+  for (const double t : {2.9, 3.0, 3.1, 3.2, 3.3, 3.4}) {
+    const OdometryResult r = run.odometry.process(castScan(structuredRoom(), drivePose, t, SyntheticSensor{}));
+    statuses.push_back(r.status);
+    poses.push_back(r.T_world_lidar);
+  }
+  EXPECT_EQ(statuses[0], OdometryStatus::kLost);
+  EXPECT_EQ(statuses[1], OdometryStatus::kLost);
+  EXPECT_EQ(statuses[2], OdometryStatus::kRestarted);
+  EXPECT_EQ(statuses[3], OdometryStatus::kTracking);
+  EXPECT_EQ(statuses[4], OdometryStatus::kTracking);
+  EXPECT_EQ(statuses[5], OdometryStatus::kTracking);
+  const Eigen::Isometry3d step = poses[3].inverse() * poses[5];
+  const Eigen::Isometry3d true_step = drivePose(3.2).inverse() * drivePose(3.4);
+  EXPECT_LT((true_step.inverse() * step).translation().norm(), 0.02);
+  EXPECT_STREQ(statusName(OdometryStatus::kRestarted), "restarted");
+}
+
 }  // namespace
 }  // namespace lvslam::lidar

@@ -43,7 +43,7 @@ std::map<std::string, FieldTable> fieldTables(LidarOdometryConfig& c) {
         {"reassociate_motion", &r.reassociate_motion}, {"initial_threshold", &r.initial_threshold},
         {"min_threshold", &r.min_threshold}, {"max_threshold", &r.max_threshold},
         {"degeneracy_ratio", &r.degeneracy_ratio}, {"min_correspondences", &r.min_correspondences},
-        {"min_inlier_ratio", &r.min_inlier_ratio},
+        {"min_inlier_ratio", &r.min_inlier_ratio}, {"restart_after_lost", &r.restart_after_lost},
         {"max_correction_translation", &r.max_correction_translation},
         {"max_correction_rotation_deg", &r.max_correction_rotation_deg}, {"vertex_weight", &r.vertex_weight}, {"beam_weight", &r.beam_weight},
         {"max_normal_angle_deg", &r.max_normal_angle_deg}}},
@@ -118,6 +118,8 @@ void validate(const LidarOdometryConfig& c, const std::string& where) {
           k + "registration.reassociate_motion': must not be negative");
   require(c.registration.min_threshold > 0 && c.registration.min_threshold <= c.registration.max_threshold,
           where, k + "registration': need 0 < min_threshold <= max_threshold");
+  require(c.registration.restart_after_lost >= 0, where,
+          k + "registration.restart_after_lost': must not be negative (0: never)");
   require(c.local_map.voxel_size > 0 && c.local_map.max_points_per_voxel > 0 && c.local_map.radius > 0 &&
               c.local_map.max_frame_age > 0,
           where, k + "local_map': sizes must be positive");

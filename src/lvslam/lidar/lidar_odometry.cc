@@ -28,6 +28,7 @@ const char* statusName(OdometryStatus status) {
     case OdometryStatus::kTracking: return "tracking";
     case OdometryStatus::kDegenerate: return "degenerate";
     case OdometryStatus::kLost: return "lost";
+    case OdometryStatus::kRestarted: return "restarted";
     case OdometryStatus::kRejected: return "rejected";
   }
   return "unknown";
@@ -94,12 +95,26 @@ OdometryResult LidarOdometry::registerScan() {
   const bool wild = correction.translation().norm() > reg.max_correction_translation ||
                     rotationAngle(correction) > reg.max_correction_rotation_deg * M_PI / 180.0;
   OdometryResult result;
-  const bool few_inliers = static_cast<double>(icp.correspondences) <
-                           reg.min_inlier_ratio * static_cast<double>(current_.points.size());
+  const double inlier_ratio =
+      static_cast<double>(icp.correspondences) / static_cast<double>(current_.points.size());
+  const bool few_inliers = inlier_ratio < reg.min_inlier_ratio * typicalInlierRatio();
   if (icp.correspondences < reg.min_correspondences || few_inliers || wild ||
       !icp.T_world_lidar.matrix().allFinite()) {
-    result = finish(OdometryStatus::kLost, T_pred);
+    if (reg.restart_after_lost > 0 && ++lost_in_row_ >= reg.restart_after_lost) {
+      // The map no longer matches what the scans see (or never did): the
+      // prediction carries the pose over, the scan starts a new map.
+      lost_in_row_ = 0;
+      map_ = LocalMap(config_.local_map);
+      recent_.clear();
+      recent_inlier_ratios_.clear();
+      result = finish(OdometryStatus::kRestarted, T_pred);
+    } else {
+      result = finish(OdometryStatus::kLost, T_pred);
+    }
   } else {
+    lost_in_row_ = 0;
+    recent_inlier_ratios_.push_back(inlier_ratio);
+    if (recent_inlier_ratios_.size() > kInlierRatioHistory) recent_inlier_ratios_.pop_front();
     if (!time_jump_) threshold_.update(correction);
     result = finish(icp.degenerate ? OdometryStatus::kDegenerate : OdometryStatus::kTracking, icp.T_world_lidar);
   }
@@ -152,6 +167,13 @@ void LidarOdometry::redeskew(FeatureFrame& frame, const Vector6d& old_velocity, 
 // The first frame went into the map deskewed without a velocity; the second
 // registration gives one: compensate the first frame with it, rebuild the map
 // and register again, so the whole run does not inherit a skewed map.
+double LidarOdometry::typicalInlierRatio() const {
+  if (recent_inlier_ratios_.empty()) return 1.0;
+  double sum = 0.0;
+  for (const double r : recent_inlier_ratios_) sum += r;
+  return std::min(1.0, sum / static_cast<double>(recent_inlier_ratios_.size()));
+}
+
 IcpResult LidarOdometry::bootstrapSecondFrame(const IcpResult& first_try, double threshold) {
   const Eigen::Isometry3d T_world_mid = first_try.T_world_lidar * motionOver(velocity_, mid_offset_);
   const Vector6d v =

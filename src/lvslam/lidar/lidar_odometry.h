@@ -27,6 +27,7 @@ enum class OdometryStatus {
   kTracking,     // registered
   kDegenerate,   // registered, but some directions kept the constant-velocity prediction
   kLost,         // too few features or correspondences, or a wild correction: prediction kept, map untouched
+  kRestarted,    // lost restart_after_lost times in a row: the local map restarts from this scan, predicted
   kRejected,     // time stamp not after the previous scan's: ignored entirely
 };
 const char* statusName(OdometryStatus status);
@@ -74,6 +75,7 @@ class LidarOdometry {
   OdometryResult finish(OdometryStatus status, const Eigen::Isometry3d& T);
   static void redeskew(FeatureFrame& frame, const Vector6d& old_velocity, const Vector6d& new_velocity);
   IcpResult bootstrapSecondFrame(const IcpResult& first_try, double threshold);
+  double typicalInlierRatio() const;  // mean of recent_inlier_ratios_, 1 without any
   FeatureFrame* frameWithSeq(std::uint32_t seq);
 
   LidarOdometryConfig config_;
@@ -85,6 +87,12 @@ class LidarOdometry {
   bool rejected_ = false;
   bool time_jump_ = false;
   bool has_previous_ = false;
+  int lost_in_row_ = 0;  // registrations lost since the last good one
+  // Inlier ratios of the last good registrations: how much of a scan this map
+  // can match at all (a young map, or far and sparse outdoor features, match
+  // less of a rightly registered scan than a dense room map does).
+  static constexpr std::size_t kInlierRatioHistory = 5;
+  std::deque<double> recent_inlier_ratios_;
   // Registration estimates the pose at the middle of the sweep, where an error
   // of the deskew velocity averages out (kiss-icp's mid-pose); velocities come
   // from consecutive mid-sweep poses, so deskew errors cannot feed back.
