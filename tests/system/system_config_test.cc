@@ -48,6 +48,7 @@ TEST(SystemConfig, ReadsEverySection) {
       "  lidar_direction_refinement: false\n"
       "  depth_hint_max_dt: 0.04\n"
       "  keypoint_depth_max_dt: 0.07\n"
+      "  keypoint_depth_source: features\n"
       "  map_voxel: 0.3\n");
   EXPECT_DOUBLE_EQ(c.lidar.preprocess.voxel_size, 0.4);
   EXPECT_EQ(c.visual.visual.features.orb.max_features, 543);
@@ -65,7 +66,15 @@ TEST(SystemConfig, ReadsEverySection) {
   EXPECT_FALSE(c.lidar_direction_refinement);
   EXPECT_DOUBLE_EQ(c.depth_hint_max_dt, 0.04);
   EXPECT_DOUBLE_EQ(c.keypoint_depth_max_dt, 0.07);
+  EXPECT_EQ(c.keypoint_depth_source, KeypointDepthSource::kFeatures);
   EXPECT_DOUBLE_EQ(c.map_voxel, 0.3);
+}
+
+TEST(SystemConfig, KeypointDepthsComeFromScansUnlessToldOtherwise) {
+  EXPECT_EQ(load("{}").keypoint_depth_source, KeypointDepthSource::kScans);
+  const std::string message = errorMessageOf([] { load("system:\n  keypoint_depth_source: lidar\n"); });
+  EXPECT_NE(message.find("keypoint_depth_source"), std::string::npos) << message;
+  EXPECT_NE(message.find("'scans' or 'features'"), std::string::npos) << message;
 }
 
 TEST(SystemConfig, TheShippedSimConfigLoads) {

@@ -64,13 +64,23 @@ SystemConfig loadSystemConfig(const YamlConfig& root) {
   if (const auto d = root.find("detection")) c.detection = loadDetectionConfig(*d);
   if (const auto s = root.find("system")) {
     s->requireKnownKeys({"fusion_lines_in_tracking", "lidar_direction_refinement", "depth_hint_max_dt",
-                         "keypoint_depth_radius_px", "keypoint_depth_max_dt", "map_voxel"});
+                         "keypoint_depth_radius_px", "keypoint_depth_max_dt", "keypoint_depth_source",
+                         "map_voxel"});
     c.fusion_lines_in_tracking = s->getBool("fusion_lines_in_tracking", c.fusion_lines_in_tracking);
     c.lidar_direction_refinement = s->getBool("lidar_direction_refinement", c.lidar_direction_refinement);
     c.depth_hint_max_dt = s->getDouble("depth_hint_max_dt", c.depth_hint_max_dt);
     c.keypoint_depth_radius_px = s->getDouble("keypoint_depth_radius_px", c.keypoint_depth_radius_px);
     c.keypoint_depth_max_dt = s->getDouble("keypoint_depth_max_dt", c.keypoint_depth_max_dt);
     c.map_voxel = s->getDouble("map_voxel", c.map_voxel);
+    if (const auto source = s->find("keypoint_depth_source")) {
+      const std::string name = source->asString();
+      if (name == "scans")
+        c.keypoint_depth_source = KeypointDepthSource::kScans;
+      else if (name == "features")
+        c.keypoint_depth_source = KeypointDepthSource::kFeatures;
+      else
+        source->fail("must be 'scans' or 'features', not '" + name + "'");
+    }
     if (!(c.keypoint_depth_radius_px > 0.0)) s->at("keypoint_depth_radius_px").fail("must be positive");
     if (!(c.depth_hint_max_dt > 0.0)) s->at("depth_hint_max_dt").fail("must be positive");
     if (!(c.keypoint_depth_max_dt > 0.0)) s->at("keypoint_depth_max_dt").fail("must be positive");

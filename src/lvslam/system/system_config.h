@@ -18,6 +18,14 @@ const char* runModeName(RunMode mode);
 // Throws lvslam::Error naming `where` for an unknown name.
 RunMode parseRunMode(const std::string& name, const std::string& where);
 
+// Where keyframe keypoints take their LiDAR depth from (with a LiDAR and
+// visual.keypoint_depths on): the raw points of the latest sweeps, deskewed
+// to the image time with the camera's motion, or the fusion framework's
+// accumulated LiDAR features (fused mode only). Scans by default: over the
+// 60 s room, hall and gate with seeds 1-3, fused ATE mean 5.3 cm against
+// 7.5 cm with features (docs/benchmarks.md, "Fused mode over nine sequences").
+enum class KeypointDepthSource { kScans, kFeatures };
+
 struct SystemConfig {
   RunMode mode = RunMode::kFused;
   lidar::LidarOdometryConfig lidar;
@@ -32,10 +40,11 @@ struct SystemConfig {
   // A keyframe keypoint takes the LiDAR depth of features this close (pixels;
   // the features are ~2000 per image, 3 px gave 13 depths per keyframe, 8 px 165).
   double keypoint_depth_radius_px = 8.0;
-  // Visual mode with a LiDAR: raw points this close in time to a keyframe,
+  // From scans: raw points this close in time to a keyframe,
   // deskewed with the camera's motion, give its keypoint depths (one sweep
   // at 10 Hz; the sweep phase then never leaves a keyframe without depth).
   double keypoint_depth_max_dt = 0.1;
+  KeypointDepthSource keypoint_depth_source = KeypointDepthSource::kScans;
   double map_voxel = 0.2;  // m, voxel of the exported LiDAR map (map.ply)
   // One thread, fixed order: byte-identical output for the same input.
   bool deterministic = false;

@@ -26,13 +26,13 @@ std::optional<fusion::CameraMotion> motionFromPrevious(const std::vector<VisualF
   return fusion::CameraMotion{before.timestamp, now.T_world_camera.inverse() * before.T_world_camera};
 }
 
-// Visual mode's keyframe depths are raw points, deskewed to the image time:
-// good enough to make points straight from them (ORB-SLAM2's RGB-D close
-// points), which keeps tracking alive through turns where two-view
-// triangulation lacks parallax (60 s hall: lost at 21.5 s and 1.74 m without,
-// one map and 4.7 cm with). The fusion framework's depths from accumulated
-// features are not (fused room 4.8 -> 7.6 cm): fused mode keeps them to BA
-// depth terms (docs/benchmarks.md, "Points from keyframe depths").
+// Keyframe depths from raw points, deskewed to the image time, are good
+// enough to make points straight from them (ORB-SLAM2's RGB-D close points),
+// which keeps tracking alive through turns where two-view triangulation lacks
+// parallax (visual mode, 60 s hall: lost at 21.5 s and 1.74 m without, one
+// map and 4.7 cm with). The fusion framework's depths from accumulated
+// features are not (fused room 4.8 -> 7.6 cm): with those, they stay BA depth
+// terms (docs/benchmarks.md, "Points from keyframe depths").
 visual::VisualSlamConfig visualSlamConfig(const SystemConfig& config, bool depths_from_scans) {
   visual::VisualSlamConfig c = config.visual;
   c.triangulation.create_depth_points = depths_from_scans;
@@ -47,7 +47,9 @@ VisualWorker::VisualWorker(const SystemConfig& config, const Calibration& calibr
       use_keypoint_depths_(config.visual.visual.use_keypoint_depths),
       hint_max_dt_(config.depth_hint_max_dt),
       has_lidar_(has_lidar),
-      depths_from_scans_(has_lidar && config.mode == RunMode::kVisual && config.visual.visual.use_keypoint_depths),
+      depths_from_scans_(has_lidar && config.visual.visual.use_keypoint_depths &&
+                         (config.mode == RunMode::kVisual ||
+                          config.keypoint_depth_source == KeypointDepthSource::kScans)),
       keypoint_depth_radius_px_(config.keypoint_depth_radius_px),
       keypoint_depth_max_dt_(config.keypoint_depth_max_dt),
       slam_(visualSlamConfig(config, depths_from_scans_), requireCamera(calibration)) {}
@@ -72,10 +74,10 @@ VisualFrameFeatures VisualWorker::track(visual::ExtractedImage image, double ext
   record.result = slam_.track(std::move(image));
   record.track_ms = watch.ms();
   if (depths_from_scans_ && record.result.pose_valid && slam_.currentIsKeyframe()) {
-    // Visual mode has no LiDAR odometry to accumulate features with: the raw
-    // points of the latest sweeps, deskewed with the camera's own motion,
-    // keep the map metric instead. Without that motion only the points
-    // measured close to the image time are safe.
+    // The raw points of the latest sweeps, deskewed with the camera's own
+    // motion (visual mode has no LiDAR odometry to accumulate features with).
+    // Without that motion only the points measured close to the image time
+    // are safe.
     const Stopwatch depth_watch;
     const std::optional<fusion::CameraMotion> motion = motionFromPrevious(frames_, record.result);
     const double max_dt = motion ? keypoint_depth_max_dt_ : hint_max_dt_;
@@ -88,7 +90,7 @@ VisualFrameFeatures VisualWorker::track(visual::ExtractedImage image, double ext
   frames_.push_back(std::move(record));
   VisualFrameFeatures features;
   for (const visual::ImageLineSegment& s : slam_.lineSegments()) features.segments.push_back({s.start, s.end});
-  // Fused mode: the fusion framework answers with the keyframe's depths.
+  // Fused mode with depths from features: the fusion framework answers.
   if (!depths_from_scans_ && use_keypoint_depths_ && slam_.currentIsKeyframe())
     features.keyframe_keypoints = slam_.keypointPixels();
   return features;

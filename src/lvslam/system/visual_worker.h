@@ -39,7 +39,7 @@ class VisualWorker {
   bool use_keypoint_depths_;
   double hint_max_dt_;
   bool has_lidar_;
-  bool depths_from_scans_;  // visual mode with a LiDAR: keyframe depths from raw points
+  bool depths_from_scans_;  // with a LiDAR: keyframe depths from raw points (system.keypoint_depth_source)
   double keypoint_depth_radius_px_;
   double keypoint_depth_max_dt_;  // s, deskewed raw points for keyframe depths
   visual::VisualSlam slam_;
