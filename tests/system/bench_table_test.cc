@@ -27,6 +27,26 @@ TEST(BenchTable, CellsFollowThePapersMarks) {
   EXPECT_EQ(accuracyCellText(std::nullopt), "");
 }
 
+TEST(BenchTable, MeanRowAveragesEachColumnOverTheSeeds) {
+  BenchCell slow = cell(0.03, 0.1);
+  slow.real_time_factor = 1.5;
+  slow.peak_rss_mib = 200.0;
+  BenchCell failed = cell(0.01, 0.0);
+  failed.failure = "lvslam: error: ...";
+  const std::vector<BenchRow> rows = {
+      {"room", {{"lidar", cell(0.01, 0.0)}, {"fused", cell(0.05, 0.0)}, {"visual", cell(0.02, 0.0)}}},
+      {"room-seed2", {{"lidar", slow}, {"fused", cell(0.04, 0.6)}, {"visual", failed}, {"extra", cell(0.1, 0.0)}}}};
+  const BenchRow mean = meanRow(rows, {"lidar", "visual", "fused", "extra"}, "mean");
+  EXPECT_EQ(mean.sequence, "mean");
+  ASSERT_TRUE(mean.cells.count("lidar"));
+  EXPECT_NEAR(*mean.cells.at("lidar").ate_mean_m, 0.02, 1e-12);
+  EXPECT_NEAR(mean.cells.at("lidar").real_time_factor, 2.0, 1e-12);
+  EXPECT_DOUBLE_EQ(mean.cells.at("lidar").peak_rss_mib, 200.0);
+  EXPECT_EQ(accuracyCellText(mean.cells.at("fused")), "x");  // one seed lost more than half
+  EXPECT_EQ(accuracyCellText(mean.cells.at("visual")), "fail");
+  EXPECT_EQ(mean.cells.count("extra"), 0u);  // not run on every seed
+}
+
 TEST(BenchTable, TablesHaveOneRowPerSequenceAndOneColumnPerMode) {
   std::vector<BenchRow> rows = {{"room", {{"lidar", cell(0.0105, 0.0)}, {"fused", cell(0.0094, 0.0)}}},
                                 {"gate-night", {{"lidar", cell(0.02, 0.0)}, {"visual", cell(std::nullopt, 0.9)}}}};

@@ -1,5 +1,7 @@
 #include "lvslam/system/bench_table.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace lvslam::system {
@@ -40,6 +42,34 @@ std::string accuracyCellText(const std::optional<BenchCell>& cell) {
   if (cell->lost_fraction > 0.5) return "x";  // the paper's mark for a run that lost track
   if (!cell->ate_mean_m) return "n/a";
   return fmt::format("{:.4f}", *cell->ate_mean_m);
+}
+
+BenchRow meanRow(const std::vector<BenchRow>& rows, const std::vector<std::string>& columns, const std::string& label) {
+  BenchRow mean{label, {}};
+  for (const std::string& column : columns) {
+    const bool everywhere = !rows.empty() && std::all_of(rows.begin(), rows.end(), [&](const BenchRow& row) {
+      return cellOf(row, column).has_value();
+    });
+    if (!everywhere) continue;
+    BenchCell out;
+    double ate_sum = 0.0, rtf_sum = 0.0;
+    std::size_t with_ate = 0;
+    for (const BenchRow& row : rows) {
+      const BenchCell cell = *cellOf(row, column);
+      if (!cell.failure.empty()) out.failure = cell.failure;
+      out.lost_fraction = std::max(out.lost_fraction, cell.lost_fraction);
+      out.peak_rss_mib = std::max(out.peak_rss_mib, cell.peak_rss_mib);
+      rtf_sum += cell.real_time_factor;
+      if (cell.ate_mean_m) {
+        ate_sum += *cell.ate_mean_m;
+        ++with_ate;
+      }
+    }
+    out.real_time_factor = rtf_sum / static_cast<double>(rows.size());
+    if (with_ate == rows.size()) out.ate_mean_m = ate_sum / static_cast<double>(with_ate);
+    mean.cells[column] = out;
+  }
+  return mean;
 }
 
 std::string accuracyTable(const std::vector<BenchRow>& rows, const std::vector<std::string>& columns) {

@@ -27,6 +27,13 @@ struct BenchRow {
 // "fail" (the run stopped with an error), "" (not run).
 std::string accuracyCellText(const std::optional<BenchCell>& cell);
 
+// One row of per-column means over `rows` (the seeds of the simulated
+// suite): ATE and real-time factor averaged, peak memory and lost fraction
+// the largest (so a column where one row lost more than half shows x, one
+// where a row failed shows fail, one where a row has no ATE shows n/a); a
+// column that some row lacks is left out.
+BenchRow meanRow(const std::vector<BenchRow>& rows, const std::vector<std::string>& columns, const std::string& label);
+
 std::string accuracyTable(const std::vector<BenchRow>& rows, const std::vector<std::string>& columns);
 std::string speedTable(const std::vector<BenchRow>& rows, const std::vector<std::string>& columns);
 
