@@ -164,9 +164,6 @@ void LidarOdometry::redeskew(FeatureFrame& frame, const Vector6d& old_velocity, 
   }
 }
 
-// The first frame went into the map deskewed without a velocity; the second
-// registration gives one: compensate the first frame with it, rebuild the map
-// and register again, so the whole run does not inherit a skewed map.
 double LidarOdometry::typicalInlierRatio() const {
   if (recent_inlier_ratios_.empty()) return 1.0;
   double sum = 0.0;
@@ -174,6 +171,9 @@ double LidarOdometry::typicalInlierRatio() const {
   return std::min(1.0, sum / static_cast<double>(recent_inlier_ratios_.size()));
 }
 
+// The first frame went into the map deskewed without a velocity; the second
+// registration gives one: compensate the first frame with it, rebuild the map
+// and register again, so the whole run does not inherit a skewed map.
 IcpResult LidarOdometry::bootstrapSecondFrame(const IcpResult& first_try, double threshold) {
   const Eigen::Isometry3d T_world_mid = first_try.T_world_lidar * motionOver(velocity_, mid_offset_);
   const Vector6d v =
