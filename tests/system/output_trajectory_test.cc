@@ -65,6 +65,39 @@ TEST(OutputTrajectory, NoJumpWhenTheVisualMapIsOffAtTheSwitchBack) {
   }
 }
 
+// A visual glitch sends the output to the LiDAR for five frames while the
+// LiDAR drifts 1 cm per frame; back in the same visual map the output first
+// continues from where it is (no jump), then rejoins the map's own placement
+// by at most the rejoin step per frame, and ends on it.
+TEST(OutputTrajectory, BackInTheSameMapTheOutputRejoinsItsFirstAnchorByBoundedSteps) {
+  const RejoinStep rejoin{0.002, 0.05};
+  OutputTrajectory out(kTLidarCamera, rejoin);
+  OutputTrajectory stays(kTLidarCamera);  // no rejoin: the offset stays for good
+  for (int i = 0; i < 60; ++i) {
+    FrameEstimates f = exactEstimates(0.1 * i, 0, Eigen::Isometry3d::Identity(), Eigen::Isometry3d::Identity());
+    f.T_odom_lidar->translation() += Eigen::Vector3d(0.01 * i, 0.0, 0.0);
+    const OutputSource src = (i >= 10 && i < 15) ? OutputSource::kLidar : OutputSource::kVisual;
+    out.add(f, src);
+    stays.add(f, src);
+  }
+  const Trajectory& traj = out.trajectory();
+  const auto offset = [](const StampedPose& p) {
+    return (p.T_world_frame.translation() - trueCamera(p.t).translation()).norm();
+  };
+  EXPECT_GT(offset(traj[15]), 0.04);  // five frames of 1 cm LiDAR drift
+  EXPECT_NEAR(offset(stays.trajectory()[59]), offset(traj[15]), 1e-9);
+  for (std::size_t i = 16; i < traj.size(); ++i) {
+    const Eigen::Isometry3d step = traj[i - 1].T_world_frame.inverse() * traj[i].T_world_frame;
+    const Eigen::Isometry3d true_step = trueCamera(traj[i - 1].t).inverse() * trueCamera(traj[i].t);
+    const Eigen::Isometry3d extra = true_step.inverse() * step;
+    EXPECT_LT(extra.translation().norm(), rejoin.max_m + 1e-9) << i;
+    EXPECT_LT(rotationAngle(extra) * 180.0 / M_PI, rejoin.max_deg + 1e-9) << i;
+  }
+  EXPECT_LT(offset(traj[59]), 1e-9);
+  ASSERT_TRUE(out.T_world_map(0).has_value());
+  EXPECT_TRUE(out.T_world_map(0)->isApprox(Eigen::Isometry3d::Identity(), 1e-12));
+}
+
 TEST(OutputTrajectory, LidarOnlyFollowsTheOdometryInTheCameraFrame) {
   OutputTrajectory out(kTLidarCamera);
   for (int i = 0; i < 10; ++i) {

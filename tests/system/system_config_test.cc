@@ -43,6 +43,8 @@ TEST(SystemConfig, ReadsEverySection) {
       "  frames_to_recover: 6\n"
       "  max_disagreement_m: 0.05\n"
       "  max_disagreement_deg: 1.5\n"
+      "  rejoin_step_m: 0.004\n"
+      "  rejoin_step_deg: 0.1\n"
       "system:\n"
       "  fusion_lines_in_tracking: false\n"
       "  lidar_direction_refinement: false\n"
@@ -62,6 +64,8 @@ TEST(SystemConfig, ReadsEverySection) {
   EXPECT_EQ(c.detection.frames_to_recover, 6);
   EXPECT_DOUBLE_EQ(c.detection.max_disagreement_m, 0.05);
   EXPECT_DOUBLE_EQ(c.detection.max_disagreement_deg, 1.5);
+  EXPECT_DOUBLE_EQ(c.detection.rejoin_step_m, 0.004);
+  EXPECT_DOUBLE_EQ(c.detection.rejoin_step_deg, 0.1);
   EXPECT_FALSE(c.fusion_lines_in_tracking);
   EXPECT_FALSE(c.lidar_direction_refinement);
   EXPECT_DOUBLE_EQ(c.depth_hint_max_dt, 0.04);
@@ -105,6 +109,7 @@ TEST(SystemConfig, InvalidValuesAreErrorsNamingTheKey) {
   EXPECT_THROW(load("detection:\n  min_inlier_ratio: 1.5\n"), lvslam::Error);
   EXPECT_THROW(load("detection:\n  min_brightness: 200\n  max_brightness: 100\n"), lvslam::Error);
   EXPECT_THROW(load("detection:\n  max_disagreement_m: 0\n"), lvslam::Error);
+  EXPECT_THROW(load("detection:\n  rejoin_step_m: -0.001\n"), lvslam::Error);
   EXPECT_THROW(load("detection:\n  min_tracked_points: -1\n"), lvslam::Error);
   const std::string voxel = errorMessageOf([] { load("system:\n  map_voxel: -0.2\n"); });
   EXPECT_NE(voxel.find("system.map_voxel"), std::string::npos) << voxel;

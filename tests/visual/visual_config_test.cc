@@ -50,7 +50,8 @@ TEST(VisualConfig, KeypointDepthSection) {
 }
 
 TEST(VisualConfig, LidarPosePriorSection) {
-  EXPECT_FALSE(load("visual: {}\n").use_lidar_pose_priors);
+  EXPECT_TRUE(load("visual: {}\n").use_lidar_pose_priors);  // fused mode alone gives the poses
+  EXPECT_FALSE(load("visual:\n  lidar_pose_priors: {enabled: false}\n").use_lidar_pose_priors);
   const VisualConfig c =
       load("visual:\n  lidar_pose_priors: {enabled: true, sigma_m: 0.02, sigma_deg: 0.5, huber_delta: 2.0}\n");
   EXPECT_TRUE(c.use_lidar_pose_priors);
@@ -59,6 +60,29 @@ TEST(VisualConfig, LidarPosePriorSection) {
   EXPECT_DOUBLE_EQ(c.local_window.ba.prior_huber_delta, 2.0);
   expectErrorNaming("visual:\n  lidar_pose_priors: {sigma_deg: -1}\n", "lidar_pose_priors");
   EXPECT_THROW(load("visual:\n  lidar_pose_priors: {sigma: 0.02}\n"), Error);
+}
+
+// The map correction runs with the priors; its pose graph takes local BA's
+// prior sigmas, so one number means the same in both.
+TEST(VisualConfig, MapCorrectionUnderTheLidarPosePriors) {
+  const VisualConfig d = load("visual: {}\n");
+  EXPECT_EQ(d.map_correction.every_keyframes, MapCorrectionConfig{}.every_keyframes);
+  EXPECT_DOUBLE_EQ(d.map_correction.graph.prior_sigma_m, d.local_window.ba.prior_sigma_m);
+  const VisualConfig c = load(
+      "visual:\n  lidar_pose_priors:\n    sigma_m: 0.03\n    sigma_deg: 0.4\n"
+      "    map_correction: {every_keyframes: 5, min_covisibility: 20, sigma_m: 0.01, sigma_deg: 0.2, iterations: 4}\n");
+  EXPECT_EQ(c.map_correction.every_keyframes, 5);
+  EXPECT_EQ(c.map_correction.min_covisibility, 20);
+  EXPECT_DOUBLE_EQ(c.map_correction.graph.edge_sigma_m, 0.01);
+  EXPECT_DOUBLE_EQ(c.map_correction.graph.edge_sigma_deg, 0.2);
+  EXPECT_EQ(c.map_correction.graph.max_iterations, 4);
+  EXPECT_DOUBLE_EQ(c.map_correction.graph.prior_sigma_m, 0.03);
+  EXPECT_DOUBLE_EQ(c.map_correction.graph.prior_sigma_deg, 0.4);
+  EXPECT_EQ(load("visual:\n  lidar_pose_priors: {map_correction: {every_keyframes: 0}}\n").map_correction.every_keyframes,
+            0);  // off
+  expectErrorNaming("visual:\n  lidar_pose_priors: {map_correction: {sigma_m: 0}}\n", "map_correction");
+  EXPECT_THROW(load("visual:\n  lidar_pose_priors: {map_correction: {every_keyframes: -1}}\n"), Error);
+  EXPECT_THROW(load("visual:\n  lidar_pose_priors: {map_correction: {every: 3}}\n"), Error);
 }
 
 TEST(VisualConfig, MapReuseSection) {

@@ -39,6 +39,10 @@ struct DetectionConfig {
   int frames_to_recover = 10;           // consecutive healthy frames before vision is believed again
   double max_disagreement_m = 0.02;     // per frame, between visual and LiDAR motion
   double max_disagreement_deg = 0.5;
+  // Back in a visual map after the LiDAR, the output rejoins the map's first
+  // anchor by at most this much per frame (system/output_trajectory.h).
+  double rejoin_step_m = 0.002;
+  double rejoin_step_deg = 0.05;
 };
 
 enum class OutputSource { kVisual, kLidar };

@@ -25,7 +25,10 @@ std::optional<MotionDisagreement> disagreement(const VisualFrameRecord& v0, cons
   const auto& r1 = v1.result;
   if (!r0.pose_valid || !r1.pose_valid || r0.map_id != r1.map_id || !l0.T_odom_lidar || !l1.T_odom_lidar)
     return std::nullopt;
-  const Eigen::Isometry3d visual_motion = r0.T_world_camera.inverse() * r1.T_world_camera;
+  // A map correction in this frame moved the map under the camera: compare
+  // the motion within the corrected map.
+  const Eigen::Isometry3d T_world_camera0 = r1.T_new_old ? *r1.T_new_old * r0.T_world_camera : r0.T_world_camera;
+  const Eigen::Isometry3d visual_motion = T_world_camera0.inverse() * r1.T_world_camera;
   const Eigen::Isometry3d lidar_motion =
       T_lidar_camera.inverse() * (l0.T_odom_lidar->inverse() * *l1.T_odom_lidar) * T_lidar_camera;
   const Eigen::Isometry3d difference = visual_motion.inverse() * lidar_motion;
@@ -166,7 +169,7 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
       visualOutput(records, out, *output);
       break;
     case RunMode::kFused:
-      output.emplace(T_lidar_camera);
+      output.emplace(T_lidar_camera, RejoinStep{config.detection.rejoin_step_m, config.detection.rejoin_step_deg});
       fusedOutput(records, config, T_lidar_camera, out, *output);
       break;
   }

@@ -1,5 +1,10 @@
 #include "lvslam/system/output_trajectory.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "lvslam/core/se3.h"
+
 namespace lvslam::system {
 
 std::optional<Eigen::Isometry3d> OutputTrajectory::lidarIncrement(const FrameEstimates& frame) const {
@@ -12,7 +17,20 @@ std::optional<Eigen::Isometry3d> OutputTrajectory::lidarIncrement(const FrameEst
 std::optional<Eigen::Isometry3d> OutputTrajectory::T_world_map(int map_id) const {
   const auto it = anchors_.find(map_id);
   if (it == anchors_.end()) return std::nullopt;
-  return it->second;
+  return it->second.first;
+}
+
+// One bounded step of the camera from where the current anchor puts it
+// toward where the first anchor does, along the geodesic in the camera frame.
+void OutputTrajectory::stepTowardFirst(Anchor& anchor, const Eigen::Isometry3d& T_map_camera) const {
+  const Eigen::Isometry3d T_now = anchor.current * T_map_camera;
+  const Vector6d xi = logSE3(T_now.inverse() * (anchor.first * T_map_camera));
+  const double distance = xi.head<3>().norm(), angle = xi.tail<3>().norm() * 180.0 / M_PI;
+  if (distance < 1e-12 && angle < 1e-12) return;
+  double fraction = 1.0;
+  if (distance > rejoin_.max_m) fraction = std::min(fraction, rejoin_.max_m / distance);
+  if (angle > rejoin_.max_deg) fraction = std::min(fraction, rejoin_.max_deg / angle);
+  anchor.current = T_now * expSE3(fraction * xi) * T_map_camera.inverse();
 }
 
 Eigen::Isometry3d OutputTrajectory::add(const FrameEstimates& frame, OutputSource source) {
@@ -27,11 +45,18 @@ Eigen::Isometry3d OutputTrajectory::add(const FrameEstimates& frame, OutputSourc
     const bool reanchor = anchored_map_id_ != frame.visual_map_id || last_source_ != OutputSource::kVisual;
     if (reanchor) {
       // On the first frame the visual map frame is the world frame.
-      anchors_[frame.visual_map_id] =
+      const Eigen::Isometry3d T_world_map =
           first ? Eigen::Isometry3d::Identity() : T_world_camera * frame.T_map_camera->inverse();
+      const auto known = anchors_.find(frame.visual_map_id);
+      if (known == anchors_.end())
+        anchors_[frame.visual_map_id] = {T_world_map, T_world_map};
+      else
+        known->second.current = T_world_map;
       anchored_map_id_ = frame.visual_map_id;
+    } else {
+      stepTowardFirst(anchors_.at(anchored_map_id_), *frame.T_map_camera);
     }
-    T_world_camera = anchors_.at(anchored_map_id_) * *frame.T_map_camera;
+    T_world_camera = anchors_.at(anchored_map_id_).current * *frame.T_map_camera;
   } else if (first && frame.T_odom_lidar) {
     // LiDAR from the start: the odometry frame, carried to the camera.
     T_world_camera = *frame.T_odom_lidar * T_lidar_camera_;

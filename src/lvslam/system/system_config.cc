@@ -37,7 +37,7 @@ void applyAblation(SystemConfig& config, const std::string& name, const std::str
 DetectionConfig loadDetectionConfig(const YamlConfig& n) {
   n.requireKnownKeys({"min_tracked_points", "min_tracked_lines", "min_inlier_ratio", "min_brightness",
                       "max_brightness", "min_contrast", "frames_to_recover", "max_disagreement_m",
-                      "max_disagreement_deg"});
+                      "max_disagreement_deg", "rejoin_step_m", "rejoin_step_deg"});
   DetectionConfig c;
   c.min_tracked_points = n.getInt("min_tracked_points", c.min_tracked_points);
   c.min_tracked_lines = n.getInt("min_tracked_lines", c.min_tracked_lines);
@@ -48,11 +48,14 @@ DetectionConfig loadDetectionConfig(const YamlConfig& n) {
   c.frames_to_recover = n.getInt("frames_to_recover", c.frames_to_recover);
   c.max_disagreement_m = n.getDouble("max_disagreement_m", c.max_disagreement_m);
   c.max_disagreement_deg = n.getDouble("max_disagreement_deg", c.max_disagreement_deg);
+  c.rejoin_step_m = n.getDouble("rejoin_step_m", c.rejoin_step_m);
+  c.rejoin_step_deg = n.getDouble("rejoin_step_deg", c.rejoin_step_deg);
   if (c.min_tracked_points < 0 || c.min_tracked_lines < 0) n.fail("tracked minima must not be negative");
   if (!(c.min_inlier_ratio >= 0.0 && c.min_inlier_ratio <= 1.0)) n.fail("min_inlier_ratio must be in [0, 1]");
   if (!(c.min_brightness < c.max_brightness)) n.fail("need min_brightness < max_brightness");
   if (c.frames_to_recover < 1) n.fail("frames_to_recover must be at least 1");
   if (!(c.max_disagreement_m > 0.0 && c.max_disagreement_deg > 0.0)) n.fail("disagreement bounds must be positive");
+  if (!(c.rejoin_step_m >= 0.0 && c.rejoin_step_deg >= 0.0)) n.fail("rejoin steps must not be negative");
   return c;
 }
 

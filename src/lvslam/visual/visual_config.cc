@@ -92,7 +92,7 @@ VisualConfig loadVisualConfig(const YamlConfig& section) {
       depths->fail("sigma_ratio and huber_delta must be positive");
   }
   if (const auto priors = section.find("lidar_pose_priors")) {
-    rejectUnknownKeys(*priors, {"enabled", "sigma_m", "sigma_deg", "huber_delta"});
+    rejectUnknownKeys(*priors, {"enabled", "sigma_m", "sigma_deg", "huber_delta", "map_correction"});
     BundleAdjustmentConfig& ba = c.local_window.ba;
     c.use_lidar_pose_priors = priors->getBool("enabled", c.use_lidar_pose_priors);
     ba.prior_sigma_m = priors->getDouble("sigma_m", ba.prior_sigma_m);
@@ -100,7 +100,24 @@ VisualConfig loadVisualConfig(const YamlConfig& section) {
     ba.prior_huber_delta = priors->getDouble("huber_delta", ba.prior_huber_delta);
     if (!(ba.prior_sigma_m > 0.0) || !(ba.prior_sigma_deg > 0.0) || !(ba.prior_huber_delta > 0.0))
       priors->fail("sigma_m, sigma_deg and huber_delta must be positive");
+    if (const auto correction = priors->find("map_correction")) {
+      rejectUnknownKeys(*correction, {"every_keyframes", "min_covisibility", "sigma_m", "sigma_deg", "iterations"});
+      MapCorrectionConfig& m = c.map_correction;
+      m.every_keyframes = correction->getInt("every_keyframes", m.every_keyframes);
+      m.min_covisibility = correction->getInt("min_covisibility", m.min_covisibility);
+      m.graph.edge_sigma_m = correction->getDouble("sigma_m", m.graph.edge_sigma_m);
+      m.graph.edge_sigma_deg = correction->getDouble("sigma_deg", m.graph.edge_sigma_deg);
+      m.graph.max_iterations = correction->getInt("iterations", m.graph.max_iterations);
+      if (m.every_keyframes < 0 || m.min_covisibility < 1 || !(m.graph.edge_sigma_m > 0.0) ||
+          !(m.graph.edge_sigma_deg > 0.0) || m.graph.max_iterations < 1) {
+        correction->fail("every_keyframes >= 0, min_covisibility >= 1, iterations >= 1 and positive sigmas required");
+      }
+    }
   }
+  PoseGraphConfig& graph = c.map_correction.graph;
+  graph.prior_sigma_m = c.local_window.ba.prior_sigma_m;
+  graph.prior_sigma_deg = c.local_window.ba.prior_sigma_deg;
+  graph.prior_huber_delta = c.local_window.ba.prior_huber_delta;
   if (const auto reuse = section.find("map_reuse")) {
     rejectUnknownKeys(*reuse, {"radius_depths", "max_angle_deg", "max_keyframes", "min_age_keyframes"});
     LocalKeyframeConfig& m = c.local_map;

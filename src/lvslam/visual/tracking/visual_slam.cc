@@ -116,6 +116,8 @@ struct VisualSlam::Impl {
   std::vector<FusionLineWait> fusion_lines;
   std::vector<int> last_points;  // landmarks the last tracked frame observed
   std::deque<StampedPose> lidar_poses;  // the latest addLidarPose() poses (T_odom_camera)
+  int keyframes_since_correction = 0;
+  std::optional<Eigen::Isometry3d> map_correction;  // of the current frame (VisualFrameResult::T_new_old)
 
   VisualFrameResult track(ExtractedImage image, std::vector<PixelDepth> hints);
   void initialize(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
@@ -129,7 +131,20 @@ struct VisualSlam::Impl {
   void insertKeyframe();
   std::vector<int> pendingFusionLines();
   void attachLidarPoses();
+  void correctWithOdometry(int keyframe);
 };
+
+// Every few keyframes the whole map is pulled onto the LiDAR poses
+// (module/odometry_map_correction.h), once the odometry is aligned with it.
+void VisualSlam::Impl::correctWithOdometry(int keyframe) {
+  const MapCorrectionConfig& c = config.visual.map_correction;
+  if (!config.visual.use_lidar_pose_priors || c.every_keyframes == 0 || !map.T_world_odom()) return;
+  if (++keyframes_since_correction < c.every_keyframes) return;
+  keyframes_since_correction = 0;
+  const Eigen::Isometry3d T_old_camera_world = map.keyframe(keyframe).T_camera_world;
+  if (!correctMapWithOdometry(map, c).graph.solved) return;
+  map_correction = map.keyframe(keyframe).T_camera_world.inverse() * T_old_camera_world;
+}
 
 // Keyframes meet the LiDAR poses of their times, whichever came first (the
 // initial pair's first view is older than the poses delivered before it).
@@ -151,6 +166,7 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   ++frame_index;
   current_has_pose = false;
   current_keyframe = -1;
+  map_correction.reset();
   VisualFrameResult result;
   result.timestamp = image.timestamp;
   const ImageStatistics stats = image.stats;
@@ -182,6 +198,7 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   result.tracked_points = current.point_inliers;
   result.tracked_lines = current.line_inliers;
   result.keyframe = current_keyframe >= 0;
+  result.T_new_old = map_correction;
   attachLidarPoses();
   return result;
 }
@@ -312,7 +329,8 @@ void VisualSlam::Impl::insertKeyframe() {
   for (size_t i = 0; i < current.line_landmark.size(); ++i)
     if (current.line_landmark[i] >= 0) map.addLineObservation(current.line_landmark[i], id, static_cast<int>(i));
   mapper.process(map, id);
-  // BA moved the keyframe: the tracked pose follows it.
+  correctWithOdometry(id);
+  // BA (and the odometry correction) moved the keyframe: the tracked pose follows it.
   current.T_camera_world = map.keyframe(id).T_camera_world;
   T_last = current.T_camera_world;
   reference_keyframe = id;
@@ -334,6 +352,7 @@ void VisualSlam::Impl::newMap() {
   fusion_lines.clear();
   ++map_id;
   metric = false;
+  keyframes_since_correction = 0;
   reference.reset();
   reference_keyframe = -1;
   reference_tracked_keyframe = -1;  // keyframe ids restart with the new map

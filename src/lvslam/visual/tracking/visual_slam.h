@@ -90,6 +90,10 @@ struct VisualFrameResult {
   double inlier_ratio = 0.0;  // inliers / matches of the last pose optimisation
   double brightness = 0.0, contrast = 0.0;
   int keypoints = 0, segments = 0;
+  // The map was pulled onto the LiDAR odometry in this frame
+  // (config.visual.map_correction): earlier poses of this map are, in the
+  // corrected map, T_new_old * T_world_camera (the newest keyframe's move).
+  std::optional<Eigen::Isometry3d> T_new_old;
 };
 
 class VisualSlam {

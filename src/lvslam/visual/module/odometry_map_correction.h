@@ -1,0 +1,28 @@
+#pragma once
+// Map-wide correction with the LiDAR odometry (lvslam's addition,
+// docs/visual-subsystem.md "LiDAR pose priors"): every keyframe of the visual
+// map enters a pose graph (optimize/odometry_pose_graph.h) with edges between
+// covisible and consecutive keyframes and the LiDAR odometry's poses as
+// priors; the landmarks then move rigidly with their first observer. Local BA
+// alone cannot remove the drift: the keyframes outside its window are fixed
+// and hold it.
+#include "lvslam/visual/data/visual_map.h"
+#include "lvslam/visual/optimize/odometry_pose_graph.h"
+
+namespace lvslam::visual {
+
+struct MapCorrectionConfig {
+  int every_keyframes = 10;    // a correction after this many new keyframes; 0: never
+  int min_covisibility = 50;   // landmarks two keyframes share to be an edge
+  PoseGraphConfig graph;
+};
+
+struct MapCorrectionResult {
+  PoseGraphResult graph;
+  int keyframes = 0;
+  double max_shift_m = 0.0, max_rotation_deg = 0.0;  // largest keyframe correction
+};
+
+MapCorrectionResult correctMapWithOdometry(VisualMap& map, const MapCorrectionConfig& config);
+
+}  // namespace lvslam::visual
