@@ -3,18 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include <unordered_map>
 #include <utility>
 
+#include "lvslam/core/se3.h"
+
 namespace lvslam::visual {
-namespace {
-
-// The world-to-world motion of everything keyframe k carries: p_new = M p_old.
-Eigen::Isometry3d landmarkMotion(const Eigen::Isometry3d& T_old_camera_world, const Eigen::Isometry3d& T_new_camera_world) {
-  return T_new_camera_world.inverse() * T_old_camera_world;
-}
-
-}  // namespace
 
 MapCorrectionResult correctMapWithOdometry(VisualMap& map, const MapCorrectionConfig& config) {
   MapCorrectionResult result;
@@ -46,30 +39,28 @@ MapCorrectionResult correctMapWithOdometry(VisualMap& map, const MapCorrectionCo
   for (const auto& [a, b] : pairs)
     edges.push_back({a, b, nodes[a].T_camera_world * nodes[b].T_camera_world.inverse()});
 
-  std::vector<Eigen::Isometry3d> before;
-  for (const PoseGraphNode& node : nodes) before.push_back(node.T_camera_world);
   result.graph = optimizePoseGraph(nodes, edges, config.graph);
   if (!result.graph.solved) return result;
 
-  std::unordered_map<int, Eigen::Isometry3d> motion;  // per keyframe id
+  // The map still holds the old poses until each keyframe is written back.
   for (size_t i = 0; i < ids.size(); ++i) {
-    const Eigen::Isometry3d M = landmarkMotion(before[i], nodes[i].T_camera_world);
-    motion[ids[i]] = M;
-    map.keyframe(ids[i]).T_camera_world = nodes[i].T_camera_world;
-    const Eigen::Vector3d shift = (before[i].inverse().translation() - nodes[i].T_camera_world.inverse().translation());
-    const double angle = Eigen::AngleAxisd(M.linear()).angle() * 180.0 / M_PI;
+    Eigen::Isometry3d& T_camera_world = map.keyframe(ids[i]).T_camera_world;
+    const Eigen::Isometry3d M = nodes[i].T_camera_world.inverse() * T_camera_world;
+    const Eigen::Vector3d shift = T_camera_world.inverse().translation() - nodes[i].T_camera_world.inverse().translation();
     result.max_shift_m = std::max(result.max_shift_m, shift.norm());
-    result.max_rotation_deg = std::max(result.max_rotation_deg, angle);
+    result.max_rotation_deg = std::max(result.max_rotation_deg, rotationAngle(M) * 180.0 / M_PI);
+    result.T_new_old[ids[i]] = M;
+    T_camera_world = nodes[i].T_camera_world;
   }
   for (const auto& [id, point] : map.points()) {
     if (point.bad || point.observations.empty()) continue;
-    const Eigen::Isometry3d& M = motion.at(point.observations.front().keyframe);
+    const Eigen::Isometry3d& M = result.T_new_old.at(point.observations.front().keyframe);
     PointLandmark& p = map.point(id);
     p.p_world = M * p.p_world;
   }
   for (const auto& [id, line] : map.lines()) {
     if (line.bad || line.observations.empty()) continue;
-    const Eigen::Isometry3d& M = motion.at(line.observations.front().keyframe);
+    const Eigen::Isometry3d& M = result.T_new_old.at(line.observations.front().keyframe);
     LineLandmark& l = map.line(id);
     l.line_world = l.line_world.transformed(M);
     l.start_world = M * l.start_world;

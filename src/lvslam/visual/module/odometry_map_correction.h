@@ -6,6 +6,8 @@
 // priors; the landmarks then move rigidly with their first observer. Local BA
 // alone cannot remove the drift: the keyframes outside its window are fixed
 // and hold it.
+#include <unordered_map>
+
 #include "lvslam/visual/data/visual_map.h"
 #include "lvslam/visual/optimize/odometry_pose_graph.h"
 
@@ -19,6 +21,9 @@ struct MapCorrectionConfig {
 
 struct MapCorrectionResult {
   PoseGraphResult graph;
+  // Per keyframe id, when solved: the world motion T_new_old of everything
+  // the keyframe carries (p_new = T_new_old p_old).
+  std::unordered_map<int, Eigen::Isometry3d> T_new_old;
   int keyframes = 0;
   double max_shift_m = 0.0, max_rotation_deg = 0.0;  // largest keyframe correction
 };

@@ -141,9 +141,8 @@ void VisualSlam::Impl::correctWithOdometry(int keyframe) {
   if (!config.visual.use_lidar_pose_priors || c.every_keyframes == 0 || !map.T_world_odom()) return;
   if (++keyframes_since_correction < c.every_keyframes) return;
   keyframes_since_correction = 0;
-  const Eigen::Isometry3d T_old_camera_world = map.keyframe(keyframe).T_camera_world;
-  if (!correctMapWithOdometry(map, c).graph.solved) return;
-  map_correction = map.keyframe(keyframe).T_camera_world.inverse() * T_old_camera_world;
+  const MapCorrectionResult r = correctMapWithOdometry(map, c);
+  if (r.graph.solved) map_correction = r.T_new_old.at(keyframe);
 }
 
 // Keyframes meet the LiDAR poses of their times, whichever came first (the
