@@ -51,8 +51,9 @@ std::vector<Column> columns(bool ablations) {
   out.push_back({"fused w/o e_dir", {"--mode", "fused", "--ablate", "direction-residual"}});
   out.push_back({"fused w/o d_v_mean", {"--mode", "fused", "--ablate", "lidar-direction-refinement"}});
   out.push_back({"fused w/o fusion lines", {"--mode", "fused", "--ablate", "fusion-lines"}});
-  // lvslam's addition to the paper (docs/visual-subsystem.md).
+  // lvslam's additions to the paper (docs/visual-subsystem.md, docs/architecture.md).
   out.push_back({"fused w/o keypoint depths", {"--mode", "fused", "--ablate", "keypoint-depths"}});
+  out.push_back({"fused, paper's output", {"--mode", "fused", "--ablate", "output-fusion"}});
   return out;
 }
 

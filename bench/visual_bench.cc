@@ -94,7 +94,7 @@ void BM_LocalBundleAdjustment(benchmark::State& state) {
   truth.intrinsics = s.K;
   std::mt19937 rng(4);
   std::normal_distribution<double> noise(0.0, 1.0);
-  for (size_t k = 0; k < s.T_camera_world.size(); ++k) truth.keyframes.push_back({s.T_camera_world[k], k < 2});
+  for (size_t k = 0; k < s.T_camera_world.size(); ++k) truth.keyframes.push_back({s.T_camera_world[k], k < 2, std::nullopt});
   for (const auto& p : s.points) truth.points.push_back({p + 0.02 * Eigen::Vector3d(noise(rng), noise(rng), noise(rng)), false});
   for (const auto& seg : s.segments) truth.lines.push_back({testing::lineOf(seg), seg.b - seg.a, false});
   for (size_t k = 0; k < s.T_camera_world.size(); ++k) {

@@ -217,10 +217,13 @@ struct FusedScenario {
 };
 
 // Healthy vision in map 0, a blackout, then a new map 1; the LiDAR is exact throughout.
+const Eigen::Isometry3d kTMap0World = expSE3((Vector6d() << 1, 2, 3, 0.1, 0.2, 0.3).finished());
+const Eigen::Isometry3d kTMap1World = expSE3((Vector6d() << -4, 0, 1, 0.5, -0.2, 0.0).finished());
+
 FusedScenario blackoutScenario(std::size_t frames) {
   FusedScenario s;
-  const Eigen::Isometry3d map0 = expSE3((Vector6d() << 1, 2, 3, 0.1, 0.2, 0.3).finished());
-  const Eigen::Isometry3d map1 = expSE3((Vector6d() << -4, 0, 1, 0.5, -0.2, 0.0).finished());
+  const Eigen::Isometry3d& map0 = kTMap0World;
+  const Eigen::Isometry3d& map1 = kTMap1World;
   for (std::size_t j = 0; j < frames; ++j) {
     const double t = frameTime(j);
     visual::VisualFrameResult r;
@@ -294,9 +297,16 @@ TEST(AssembleOutput, FusedKeepsEachSubsystemsOwnTrajectory) {
   EXPECT_TRUE(assembleOutput(s.records, configFor(RunMode::kVisual), kTCameraLidar).lidar_camera.empty());
 }
 
+// The paper's output (output fusion off): the visual pose itself while vision is trusted.
+SystemConfig paperOutputConfig() {
+  SystemConfig c = configFor(RunMode::kFused);
+  c.output_fusion.enabled = false;
+  return c;
+}
+
 TEST(AssembleOutput, FusedUsesVisionOnlyAfterFramesToRecoverHealthyAgreeingFrames) {
   FusedScenario s = blackoutScenario(20);
-  SystemConfig config = configFor(RunMode::kFused);
+  SystemConfig config = paperOutputConfig();
   config.detection.frames_to_recover = 6;
   const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
   ASSERT_EQ(out.frames.size(), 20u);
@@ -313,7 +323,7 @@ TEST(AssembleOutput, FusedUsesVisionOnlyAfterFramesToRecoverHealthyAgreeingFrame
 
 TEST(AssembleOutput, FusedBlackoutSwitchesToLidarAtOnceAndBackWithoutJumps) {
   FusedScenario s = blackoutScenario(50);
-  SystemConfig config = configFor(RunMode::kFused);
+  SystemConfig config = paperOutputConfig();
   config.detection.frames_to_recover = 5;
   const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
   ASSERT_EQ(out.frames.size(), 50u);
@@ -372,6 +382,78 @@ TEST(AssembleOutput, FusedSkipsFramesBeforeTheFirstLidarPose) {
   ASSERT_TRUE(out.frames[2].T_world_camera);
   EXPECT_EQ(out.trajectory.size(), 8u);
   EXPECT_TRUE(out.frames[2].T_world_camera->isApprox(exactOdomLidar(frameTime(2)) * kTCameraLidar.inverse(), 1e-12));
+}
+
+// ---- fused mode with output fusion (the default) ----
+
+// The LiDAR is 4 mm off along the camera's y axis and vision 6 mm along its
+// x axis, and vision's information says it knows y and the rotation but
+// not x: while vision is trusted the output is the truth (in the odometry
+// frame), reached and left by bounded steps; in the blackout it is the LiDAR.
+TEST(AssembleOutput, OutputFusionTakesEachDirectionFromWhoKnowsItAndStepsAcrossSwitches) {
+  FusedScenario s = blackoutScenario(50);
+  const Eigen::Isometry3d lidar_error = makePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.004, 0.0));
+  const Eigen::Isometry3d visual_error = makePose(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.006, 0.0, 0.0));
+  Matrix6d H_visual = 1e12 * Matrix6d::Identity();
+  H_visual(0, 0) = 0.0;  // rho_x: vision does not know the camera's x
+  for (std::size_t j = 0; j < s.records.visual.size(); ++j) {
+    const double t = frameTime(j);
+    visual::VisualFrameResult& r = s.records.visual[j].result;
+    if (r.pose_valid) {
+      const Eigen::Isometry3d& T_map_world = r.map_id == 0 ? kTMap0World : kTMap1World;
+      r.T_world_camera = T_map_world * trueCamera(t) * visual_error;
+      r.pose_information = H_visual;
+      r.T_world_odom = T_map_world * kTOdomWorld.inverse();
+    }
+    s.records.lidar[j] = lidarRecord(t, kTOdomWorld * trueCamera(t) * lidar_error * kTCameraLidar);
+    s.records.lidar[j].pose_reliable = true;
+  }
+  SystemConfig config = configFor(RunMode::kFused);
+  config.detection.frames_to_recover = 5;
+  ASSERT_TRUE(config.output_fusion.enabled);
+  const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
+  ASSERT_EQ(out.frames.size(), 50u);
+  ASSERT_EQ(out.switches.size(), 3u);  // to vision at 4, to the LiDAR at 20, back at 34
+  const double max_m = config.output_fusion.max_step_m;
+  for (std::size_t j = 0; j < out.frames.size(); ++j) {
+    const double t = frameTime(j);
+    ASSERT_TRUE(out.frames[j].T_world_camera) << j;
+    const Eigen::Isometry3d& T = *out.frames[j].T_world_camera;
+    const Eigen::Isometry3d truth = kTOdomWorld * trueCamera(t);
+    const bool vision = out.frames[j].source == OutputSource::kVisual;
+    EXPECT_EQ(out.frames[j].fused, vision) << j;
+    // 4 mm at 2 mm per frame: two frames after each switch the output has
+    // reached the fused pose (vision) or the LiDAR's (blackout).
+    const bool settled = j >= 2 && out.frames[j - 2].source == out.frames[j].source;
+    if (settled) {
+      const Eigen::Isometry3d expected = vision ? truth : truth * lidar_error;
+      EXPECT_LT(translationDiff(T, expected), vision ? 1e-6 : 1e-9) << j;
+    }
+    if (j == 0) continue;
+    // No jump: each step is the true motion up to one bounded change of the
+    // correction (plus the turn of the constant 4 mm error, < 0.2 mm here).
+    const Eigen::Isometry3d step = out.frames[j - 1].T_world_camera->inverse() * T;
+    const Eigen::Isometry3d true_step = trueCamera(frameTime(j - 1)).inverse() * trueCamera(t);
+    EXPECT_LT(translationDiff(step, true_step), max_m + 2e-4) << j;
+  }
+  // The visual maps sit in the output world by their alignment with the odometry.
+  ASSERT_EQ(out.T_world_map.size(), 2u);
+  EXPECT_TRUE(out.T_world_map.at(1).isApprox(kTOdomWorld * kTMap1World.inverse(), 1e-12));
+}
+
+// Without the visual information or the map's alignment with the odometry
+// there is nothing to fuse: the output is the LiDAR's, vision trusted or not.
+TEST(AssembleOutput, OutputFusionWithoutTheInformationFollowsTheLidar) {
+  FusedScenario s = blackoutScenario(20);
+  for (LidarFrameRecord& l : s.records.lidar) l.pose_reliable = true;
+  SystemConfig config = configFor(RunMode::kFused);
+  config.detection.frames_to_recover = 2;
+  const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
+  EXPECT_EQ(out.frames[10].source, OutputSource::kVisual);
+  for (std::size_t j = 0; j < out.frames.size(); ++j) {
+    EXPECT_FALSE(out.frames[j].fused) << j;
+    EXPECT_LT(translationDiff(*out.frames[j].T_world_camera, kTOdomWorld * trueCamera(frameTime(j))), 1e-9) << j;
+  }
 }
 
 }  // namespace

@@ -74,6 +74,58 @@ TEST(SystemConfig, ReadsEverySection) {
   EXPECT_DOUBLE_EQ(c.map_voxel, 0.3);
 }
 
+TEST(SystemConfig, OutputFusionKeysAreReadAndChecked) {
+  const SystemConfig c = load(
+      "output_fusion:\n"
+      "  enabled: false\n"
+      "  lidar_sigma_m: 0.01\n"
+      "  lidar_sigma_deg: 0.3\n"
+      "  visual_pixel_sigma: 4\n"
+      "  max_step_m: 0.005\n"
+      "  max_step_deg: 0.2\n");
+  EXPECT_FALSE(c.output_fusion.enabled);
+  EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_m, 0.01);
+  EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_deg, 0.3);
+  EXPECT_DOUBLE_EQ(c.output_fusion.visual_pixel_sigma, 4.0);
+  EXPECT_DOUBLE_EQ(c.output_fusion.max_step_m, 0.005);
+  EXPECT_DOUBLE_EQ(c.output_fusion.max_step_deg, 0.2);
+  EXPECT_TRUE(load("{}").output_fusion.enabled);
+  EXPECT_THROW(load("output_fusion:\n  lidar_sigma_m: 0\n"), lvslam::Error);
+  EXPECT_THROW(load("output_fusion:\n  visual_pixel_sigma: -1\n"), lvslam::Error);
+  EXPECT_THROW(load("output_fusion:\n  max_step_deg: .nan\n"), lvslam::Error);
+  const std::string typo = errorMessageOf([] { load("output_fusion:\n  visual_pixel_sigmas: 3\n"); });
+  EXPECT_NE(typo.find("visual_pixel_sigmas"), std::string::npos) << typo;
+}
+
+// Each ablation switches off exactly its own contribution.
+TEST(SystemConfig, EachAblationSwitchesOffItsContribution) {
+  const auto ablated = [](const char* name) {
+    SystemConfig c;
+    applyAblation(c, name, "--ablate");
+    return c;
+  };
+  EXPECT_FALSE(ablated("direction-residual").visual.visual.local_window.ba.use_direction_residual);
+  EXPECT_FALSE(ablated("lidar-direction-refinement").lidar_direction_refinement);
+  EXPECT_FALSE(ablated("fusion-lines").fusion_lines_in_tracking);
+  EXPECT_FALSE(ablated("keypoint-depths").visual.visual.use_keypoint_depths);
+  const SystemConfig paper_output = ablated("output-fusion");
+  EXPECT_FALSE(paper_output.output_fusion.enabled);
+  EXPECT_TRUE(paper_output.fusion_lines_in_tracking);
+  EXPECT_EQ(std::size(kAblations), 5u);
+  const std::string message = errorMessageOf([] {
+    SystemConfig c;
+    applyAblation(c, "output", "--ablate");
+  });
+  EXPECT_NE(message.find("--ablate"), std::string::npos) << message;
+  EXPECT_NE(message.find("output-fusion"), std::string::npos) << message;
+}
+
+TEST(SystemConfig, AMisspeltSectionIsAnErrorNamingIt) {
+  const std::string message = errorMessageOf([] { load("output_fuson:\n  enabled: false\n"); });
+  EXPECT_NE(message.find("test.yaml"), std::string::npos) << message;
+  EXPECT_NE(message.find("output_fuson"), std::string::npos) << message;
+}
+
 TEST(SystemConfig, KeypointDepthsComeFromScansUnlessToldOtherwise) {
   EXPECT_EQ(load("{}").keypoint_depth_source, KeypointDepthSource::kScans);
   const std::string message = errorMessageOf([] { load("system:\n  keypoint_depth_source: lidar\n"); });

@@ -144,12 +144,10 @@ TEST(SystemEndToEnd, FusedModeUsesVisionAndStaysAccurate) {
   EXPECT_EQ(r.output.trajectory.size(), r.summary.images);  // the LiDAR bridges every frame vision lacks
   EXPECT_GT(r.summary.visual_output, r.summary.images / 4);  // vision is in use for a good part
   EXPECT_GT(r.summary.fusion_lines_per_frame, 1.0);
-  // What is achieved, not the target: measured 1.31 cm rmse (2026-11-21,
-  // with the LiDAR-anchored map correction and the output rejoining the map;
-  // 2.6-2.8 cm before) while the LiDAR alone gives 0.76 cm on the same
-  // frames. The fused output should be at least as good as the LiDAR's; this
-  // bound guards against regressions.
-  EXPECT_LT(r.accuracy->ate.stats.rmse, 0.02);
+  // Issue #7: fused below the LiDAR alone, which gives 0.76 cm on the same
+  // frames (the test above). Measured 0.71 cm rmse with output fusion
+  // (2026-11-21; 1.31 cm with the paper's output, the visual pose itself).
+  EXPECT_LT(r.accuracy->ate.stats.rmse, 0.0076);
 }
 
 // ---- blackout, continuity, determinism ----
@@ -211,7 +209,8 @@ TEST(SystemEndToEnd, BlackoutSwitchesToLidarAndBackDeterministically) {
     EXPECT_LT(errors[k - 1], 0.01) << e.t - options.start_time;
   }
   EXPECT_LT(worst, 0.02);
-  EXPECT_LT(r.accuracy->ate.stats.rmse, 0.02);
+  // Measured 0.72 cm rmse with output fusion (1.08 cm with the paper's output).
+  EXPECT_LT(r.accuracy->ate.stats.rmse, 0.01);
 
   // Deterministic twice: the same files byte for byte.
   lvslam::testing::TempDir dir;

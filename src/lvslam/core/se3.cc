@@ -126,4 +126,14 @@ double rotationAngle(const Eigen::Isometry3d& T) {
   return std::acos(c);
 }
 
+Eigen::Isometry3d boundedStep(const Eigen::Isometry3d& T_from, const Eigen::Isometry3d& T_to, double max_m,
+                              double max_rad) {
+  const Vector6d xi = logSE3(T_from.inverse() * T_to);
+  const double distance = xi.head<3>().norm(), angle = xi.tail<3>().norm();
+  double s = 1.0;
+  if (distance > max_m) s = std::min(s, max_m / distance);
+  if (angle > max_rad) s = std::min(s, max_rad / angle);
+  return s >= 1.0 ? T_to : T_from * expSE3(s * xi);
+}
+
 }  // namespace lvslam

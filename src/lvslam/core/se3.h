@@ -47,4 +47,9 @@ Eigen::Isometry3d interpolateAtTime(double t, double t0, const Eigen::Isometry3d
 // Rotation angle of a pose in radians, in [0, pi].
 double rotationAngle(const Eigen::Isometry3d& T);
 
+// T_from moved toward T_to along the geodesic T_from * exp(s log(T_from^-1 T_to)),
+// s in [0, 1] as large as keeps the step within max_m and max_rad.
+Eigen::Isometry3d boundedStep(const Eigen::Isometry3d& T_from, const Eigen::Isometry3d& T_to, double max_m,
+                              double max_rad);
+
 }  // namespace lvslam

@@ -66,6 +66,7 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable) {
     if (frame.t <= last.t && scan_trajectory_.size() >= 2) {
       const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
       frame.T_odom_lidar = interpolateAtTime(frame.t, before.t, before.T_world_frame, last.t, last.T_world_frame);
+      frame.pose_reliable = reliable;
       if (reliable && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frame.T_odom_lidar * *T_lidar_camera_});
     } else if (frame.t <= last.t || extrapolate) {
       frame.T_odom_lidar = odometry_.poseAt(frame.t);

@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "lvslam/system/fused_output_trajectory.h"
 #include "lvslam/system/output_trajectory.h"
+#include "lvslam/system/pose_fusion.h"
 
 namespace lvslam::system {
 
@@ -36,6 +38,24 @@ std::optional<MotionDisagreement> disagreement(const VisualFrameRecord& v0, cons
   return MotionDisagreement{difference.translation().norm(), angle * 180.0 / M_PI};
 }
 
+std::optional<MotionDisagreement> frameDisagreement(const PipelineRecords& records, std::size_t j,
+                                                   const Eigen::Isometry3d& T_lidar_camera) {
+  if (j == 0) return std::nullopt;
+  return disagreement(records.visual[j - 1], records.visual[j], records.lidar[j - 1], records.lidar[j], T_lidar_camera);
+}
+
+// The visual pose of a frame, fused with the LiDAR's at its time when
+// output fusion is on and both are there (pose_fusion.h); in the map frame.
+std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult& r, const LidarFrameRecord& l,
+                                                const Eigen::Isometry3d& T_lidar_camera, const PoseFusionConfig& c) {
+  if (!c.enabled || !r.pose_valid || !r.pose_information || !r.T_world_odom || !l.T_odom_lidar || !l.pose_reliable)
+    return std::nullopt;
+  const Eigen::Isometry3d T_map_camera_lidar = *r.T_world_odom * *l.T_odom_lidar * T_lidar_camera;
+  const Matrix6d H_visual = *r.pose_information / (c.visual_pixel_sigma * c.visual_pixel_sigma);
+  const Matrix6d H_lidar = isotropicPoseInformation(c.lidar_sigma_m, c.lidar_sigma_deg * M_PI / 180.0);
+  return fusePoses(r.T_world_camera.inverse(), H_visual, T_map_camera_lidar.inverse(), H_lidar).inverse();
+}
+
 void lidarOutput(const PipelineRecords& records, const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
   if (records.lidar.empty()) {  // no camera: the LiDAR's own trajectory
     out.trajectory = records.T_odom_lidar_scans;
@@ -54,7 +74,8 @@ void lidarOutput(const PipelineRecords& records, const Eigen::Isometry3d& T_lida
 
 // Visual mode: each new map starts where the last one ended (the camera is
 // taken to have stood still while lost: no LiDAR to bridge the gap).
-void visualOutput(const PipelineRecords& records, SystemOutput& out, OutputTrajectory& output) {
+void visualOutput(const PipelineRecords& records, SystemOutput& out) {
+  OutputTrajectory output(Eigen::Isometry3d::Identity());  // no LiDAR: nothing to carry
   bool any_pose = false;
   for (const VisualFrameRecord& v : records.visual) {
     FrameOutput frame{v.t, std::nullopt, OutputSource::kVisual, ""};
@@ -76,23 +97,52 @@ void visualOutput(const PipelineRecords& records, SystemOutput& out, OutputTraje
     out.frames.push_back(frame);
   }
   out.trajectory = output.trajectory();
+  out.T_world_map = output.mapPlacements();
 }
 
-void fusedOutput(const PipelineRecords& records, const SystemConfig& config, const Eigen::Isometry3d& T_lidar_camera,
-                 SystemOutput& out, OutputTrajectory& output) {
+// The paper's output: the visual pose while the detection module trusts
+// it, the LiDAR's chained from the last output pose otherwise.
+void visualFirstOutput(const PipelineRecords& records, const SystemConfig& config,
+                       const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
+  OutputTrajectory output(T_lidar_camera, RejoinStep{config.detection.rejoin_step_m, config.detection.rejoin_step_deg});
   DetectionModule detection(config.detection);
   for (std::size_t j = 0; j < records.visual.size(); ++j) {
     const VisualFrameRecord& v = records.visual[j];
     const LidarFrameRecord& l = records.lidar[j];
-    const auto disagree =
-        j == 0 ? std::nullopt : disagreement(records.visual[j - 1], v, records.lidar[j - 1], l, T_lidar_camera);
-    const OutputSource source = detection.update(healthOf(v), disagree);
+    const OutputSource source = detection.update(healthOf(v), frameDisagreement(records, j, T_lidar_camera));
     FrameOutput frame{v.t, std::nullopt, source, detection.lastProblem()};
     // Without any LiDAR pose yet nothing anchors the output world: skip.
     if (l.T_odom_lidar || !output.trajectory().empty()) {
       FrameEstimates estimates{v.t, std::nullopt, v.result.map_id, l.T_odom_lidar};
       if (v.result.pose_valid) estimates.T_map_camera = v.result.T_world_camera;
       frame.T_world_camera = output.add(estimates, source);
+    }
+    out.frames.push_back(frame);
+  }
+  out.trajectory = output.trajectory();
+  out.switches = detection.switches();
+  out.T_world_map = output.mapPlacements();
+}
+
+// Output fusion (pose_fusion.h): the LiDAR pose, moved toward the fused one
+// while the detection module trusts vision; world = the odometry frame.
+void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config,
+                      const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
+  DetectionModule detection(config.detection);
+  FusedOutputTrajectory output(config.output_fusion.max_step_m, config.output_fusion.max_step_deg);
+  for (std::size_t j = 0; j < records.visual.size(); ++j) {
+    const VisualFrameRecord& v = records.visual[j];
+    const LidarFrameRecord& l = records.lidar[j];
+    const OutputSource source = detection.update(healthOf(v), frameDisagreement(records, j, T_lidar_camera));
+    FrameOutput frame{v.t, std::nullopt, source, detection.lastProblem()};
+    if (v.result.T_world_odom) out.T_world_map[v.result.map_id] = v.result.T_world_odom->inverse();
+    if (l.T_odom_lidar) {  // none before the LiDAR's first pose
+      std::optional<Eigen::Isometry3d> target;
+      if (source == OutputSource::kVisual)
+        if (const auto fused = fusedWithLidar(v.result, l, T_lidar_camera, config.output_fusion))
+          target = v.result.T_world_odom->inverse() * *fused;
+      frame.fused = target.has_value();
+      frame.T_world_camera = output.add(v.t, *l.T_odom_lidar * T_lidar_camera, target);
     }
     out.frames.push_back(frame);
   }
@@ -110,18 +160,18 @@ PlySegment coloured(const Eigen::Vector3d& a, const Eigen::Vector3d& b, unsigned
   return s;
 }
 
-void addLines(const PipelineRecords& records, const OutputTrajectory* output, SystemOutput& out) {
+void addLines(const PipelineRecords& records, SystemOutput& out) {
   for (std::size_t j = 0; j < records.lidar.size() && j < out.frames.size(); ++j) {
     const auto& T = out.frames[j].T_world_camera;
     if (!T) continue;
     for (const CameraLine& line : records.lidar[j].fusion_lines)
       out.lines_world.push_back(coloured(*T * line.A, *T * line.B, 255, 0));
   }
-  if (!output) return;
   for (const MapLine& line : records.visual_lines) {
-    const auto T_world_map = output->T_world_map(line.map_id);  // a map never in the output: its lines neither
-    if (!T_world_map) continue;
-    out.lines_world.push_back(coloured(*T_world_map * line.start, *T_world_map * line.end, line.from_fusion ? 255 : 0,
+    const auto placed = out.T_world_map.find(line.map_id);  // a map never placed in the output: its lines neither
+    if (placed == out.T_world_map.end()) continue;
+    const Eigen::Isometry3d& T_world_map = placed->second;
+    out.lines_world.push_back(coloured(T_world_map * line.start, T_world_map * line.end, line.from_fusion ? 255 : 0,
                                        line.from_fusion ? 160 : 255));
   }
 }
@@ -161,19 +211,17 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
                             const Eigen::Isometry3d& T_camera_lidar) {
   SystemOutput out;
   const Eigen::Isometry3d T_lidar_camera = T_camera_lidar.inverse();
-  std::optional<OutputTrajectory> output;  // anchors the visual maps (visual and fused modes)
   switch (config.mode) {
     case RunMode::kLidar: lidarOutput(records, T_lidar_camera, out); break;
-    case RunMode::kVisual:
-      output.emplace(Eigen::Isometry3d::Identity());  // no LiDAR: nothing to carry
-      visualOutput(records, out, *output);
-      break;
+    case RunMode::kVisual: visualOutput(records, out); break;
     case RunMode::kFused:
-      output.emplace(T_lidar_camera, RejoinStep{config.detection.rejoin_step_m, config.detection.rejoin_step_deg});
-      fusedOutput(records, config, T_lidar_camera, out, *output);
+      if (config.output_fusion.enabled)
+        lidarFirstOutput(records, config, T_lidar_camera, out);
+      else
+        visualFirstOutput(records, config, T_lidar_camera, out);
       break;
   }
-  addLines(records, output ? &*output : nullptr, out);
+  addLines(records, out);
   addSubsystemTrajectories(records, config.mode, T_lidar_camera, out);
   return out;
 }

@@ -21,6 +21,7 @@ struct FrameOutput {
   std::optional<Eigen::Isometry3d> T_world_camera;  // none: no estimate for this frame
   OutputSource source = OutputSource::kLidar;
   std::string problem;  // the detection module's reason when vision was not used
+  bool fused = false;   // the visual pose fused with the LiDAR's (SystemConfig::output_fusion)
 };
 
 struct SystemOutput {
@@ -31,6 +32,8 @@ struct SystemOutput {
   bool metric = true;  // false: a monocular visual run without LiDAR depth
   std::vector<FrameOutput> frames;  // per camera frame
   std::vector<SwitchEvent> switches;
+  // Where each visual map that reached the output sits in its world.
+  std::map<int, Eigen::Isometry3d> T_world_map;
   std::vector<PlySegment> lines_world;  // fusion lines (red) and the visual map's lines (green; orange from fusion)
   // Each subsystem's own estimate, before the detection module chose: the
   // visual subsystem's T_map_camera per map id (in that map's frame), and the

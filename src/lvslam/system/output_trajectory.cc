@@ -20,17 +20,19 @@ std::optional<Eigen::Isometry3d> OutputTrajectory::T_world_map(int map_id) const
   return it->second.first;
 }
 
+std::map<int, Eigen::Isometry3d> OutputTrajectory::mapPlacements() const {
+  std::map<int, Eigen::Isometry3d> placements;
+  for (const auto& [id, anchor] : anchors_) placements.emplace(id, anchor.first);
+  return placements;
+}
+
 // One bounded step of the camera from where the current anchor puts it
-// toward where the first anchor does, along the geodesic in the camera frame.
+// toward where the first anchor does.
 void OutputTrajectory::stepTowardFirst(Anchor& anchor, const Eigen::Isometry3d& T_map_camera) const {
   const Eigen::Isometry3d T_now = anchor.current * T_map_camera;
-  const Vector6d xi = logSE3(T_now.inverse() * (anchor.first * T_map_camera));
-  const double distance = xi.head<3>().norm(), angle = xi.tail<3>().norm() * 180.0 / M_PI;
-  if (distance < 1e-12 && angle < 1e-12) return;
-  double fraction = 1.0;
-  if (distance > rejoin_.max_m) fraction = std::min(fraction, rejoin_.max_m / distance);
-  if (angle > rejoin_.max_deg) fraction = std::min(fraction, rejoin_.max_deg / angle);
-  anchor.current = T_now * expSE3(fraction * xi) * T_map_camera.inverse();
+  const Eigen::Isometry3d T_step =
+      boundedStep(T_now, anchor.first * T_map_camera, rejoin_.max_m, rejoin_.max_deg * M_PI / 180.0);
+  anchor.current = T_step * T_map_camera.inverse();
 }
 
 Eigen::Isometry3d OutputTrajectory::add(const FrameEstimates& frame, OutputSource source) {

@@ -44,6 +44,8 @@ class OutputTrajectory {
   // Where the visual map `map_id` sits in the output world (its first
   // anchor, which the output rejoins), when it was ever anchored.
   std::optional<Eigen::Isometry3d> T_world_map(int map_id) const;
+  // The same for every map anchored so far.
+  std::map<int, Eigen::Isometry3d> mapPlacements() const;
 
  private:
   struct Anchor {

@@ -29,9 +29,12 @@ void applyAblation(SystemConfig& config, const std::string& name, const std::str
     config.fusion_lines_in_tracking = false;
   else if (name == "keypoint-depths")
     config.visual.visual.use_keypoint_depths = false;
+  else if (name == "output-fusion")
+    config.output_fusion.enabled = false;
   else
     throw Error(where, "unknown ablation '" + name +
-                           "' (direction-residual, lidar-direction-refinement, fusion-lines or keypoint-depths)");
+                           "' (direction-residual, lidar-direction-refinement, fusion-lines, keypoint-depths or "
+                           "output-fusion)");
 }
 
 DetectionConfig loadDetectionConfig(const YamlConfig& n) {
@@ -59,12 +62,30 @@ DetectionConfig loadDetectionConfig(const YamlConfig& n) {
   return c;
 }
 
+PoseFusionConfig loadPoseFusionConfig(const YamlConfig& n) {
+  n.requireKnownKeys({"enabled", "lidar_sigma_m", "lidar_sigma_deg", "visual_pixel_sigma", "max_step_m", "max_step_deg"});
+  PoseFusionConfig c;
+  c.enabled = n.getBool("enabled", c.enabled);
+  c.lidar_sigma_m = n.getDouble("lidar_sigma_m", c.lidar_sigma_m);
+  c.lidar_sigma_deg = n.getDouble("lidar_sigma_deg", c.lidar_sigma_deg);
+  c.visual_pixel_sigma = n.getDouble("visual_pixel_sigma", c.visual_pixel_sigma);
+  c.max_step_m = n.getDouble("max_step_m", c.max_step_m);
+  c.max_step_deg = n.getDouble("max_step_deg", c.max_step_deg);
+  if (!(c.lidar_sigma_m > 0.0 && c.lidar_sigma_deg > 0.0 && c.visual_pixel_sigma > 0.0))
+    n.fail("lidar_sigma_m, lidar_sigma_deg and visual_pixel_sigma must be positive");
+  if (!(c.max_step_m > 0.0 && c.max_step_deg > 0.0)) n.fail("max_step_m and max_step_deg must be positive");
+  return c;
+}
+
 SystemConfig loadSystemConfig(const YamlConfig& root) {
+  // A misspelt section would silently keep all its defaults.
+  root.requireKnownKeys({"lidar", "visual", "fusion", "detection", "output_fusion", "system"});
   SystemConfig c;
   if (root.find("lidar")) c.lidar = lidar::loadLidarOdometryConfig(root);
   if (const auto v = root.find("visual")) c.visual.visual = visual::loadVisualConfig(*v);
   c.fusion = fusion::loadFusionConfig(root);
   if (const auto d = root.find("detection")) c.detection = loadDetectionConfig(*d);
+  if (const auto f = root.find("output_fusion")) c.output_fusion = loadPoseFusionConfig(*f);
   if (const auto s = root.find("system")) {
     s->requireKnownKeys({"fusion_lines_in_tracking", "lidar_direction_refinement", "depth_hint_max_dt",
                          "keypoint_depth_radius_px", "keypoint_depth_max_dt", "keypoint_depth_source",

@@ -1,7 +1,8 @@
 #pragma once
 // Everything the dual system is configured with, one plain struct per box of
 // the paper's Fig. 1, and the switches of the ablation study. Loaded from the
-// sections lidar:, visual:, fusion:, detection: and system: of a YAML file;
+// sections lidar:, visual:, fusion:, detection:, output_fusion: and system:
+// of a YAML file;
 // absent sections keep the defaults, unknown keys are lvslam::Errors.
 #include <string>
 
@@ -9,6 +10,7 @@
 #include "lvslam/fusion/fusion_config.h"
 #include "lvslam/lidar/lidar_config.h"
 #include "lvslam/system/detection_module.h"
+#include "lvslam/system/pose_fusion.h"
 #include "lvslam/visual/tracking/visual_slam.h"
 
 namespace lvslam::system {
@@ -32,6 +34,7 @@ struct SystemConfig {
   visual::VisualSlamConfig visual;
   fusion::FusionConfig fusion;
   DetectionConfig detection;
+  PoseFusionConfig output_fusion;
   // Ablations (each switches off one of the paper's contributions).
   bool fusion_lines_in_tracking = true;    // fusion lines become visual landmarks
   bool lidar_direction_refinement = true;  // d_v_mean reaches the LiDAR's linear points
@@ -53,15 +56,17 @@ struct SystemConfig {
 // Switches off one contribution of the paper for the ablation study:
 // "direction-residual" (e_dir in bundle adjustment), "lidar-direction-
 // refinement" (d_v_mean), "fusion-lines" (fusion lines as visual landmarks);
-// or lvslam's own addition, "keypoint-depths" (LiDAR depth for keyframe
-// points in bundle adjustment, beyond the paper's metric start).
+// or one of lvslam's own additions, "keypoint-depths" (LiDAR depth for
+// keyframe points in bundle adjustment, beyond the paper's metric start) and
+// "output-fusion" (the output is the visual pose itself, as in the paper).
 // Throws lvslam::Error naming `where` for another name.
 void applyAblation(SystemConfig& config, const std::string& name, const std::string& where);
 inline const char* const kAblations[] = {"direction-residual", "lidar-direction-refinement", "fusion-lines",
-                                         "keypoint-depths"};
+                                         "keypoint-depths", "output-fusion"};
 
 // `root` is the whole file; the mode and the deterministic flag come from the command line.
 SystemConfig loadSystemConfig(const YamlConfig& root);
 DetectionConfig loadDetectionConfig(const YamlConfig& section);
+PoseFusionConfig loadPoseFusionConfig(const YamlConfig& section);
 
 }  // namespace lvslam::system

@@ -185,6 +185,7 @@ PoseOptimizationResult optimizePose(const Eigen::Isometry3d& T_camera_world_init
   if (T.matrix().allFinite()) T.linear() = Eigen::Quaterniond(T.linear()).normalized().toRotationMatrix();
   result.T_camera_world = T;
   result.success = T.matrix().allFinite() && result.num_inliers >= config.min_inliers;
+  if (result.success) result.information = problem.accumulate(T, result.point_inlier, result.line_inlier, false, true).H;
   return result;
 }
 

@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "lvslam/core/plucker_line.h"
+#include "lvslam/core/se3.h"
 #include "lvslam/visual/residuals/pose_block.h"
 
 namespace lvslam::visual {
@@ -42,6 +43,10 @@ struct PoseOptimizationResult {
   Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
   std::vector<bool> point_inlier, line_inlier;
   int num_inliers = 0;
+  // J^T J of the whitened inlier residuals at the final pose, for the left
+  // update T <- exp(delta) T (delta = (rho, phi), the camera frame's): the
+  // pose's information when the observations' sigmas are right.
+  Matrix6d information = Matrix6d::Zero();
 };
 
 PoseOptimizationResult optimizePose(const Eigen::Isometry3d& T_camera_world_initial,

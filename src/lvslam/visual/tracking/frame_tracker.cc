@@ -131,6 +131,7 @@ FrameTrackingResult trackLocalMap(const VisualMap& map, const LocalMap& local, c
   const PoseOptimizationResult& fine = pass.pose;
   if (!fine.success || frame.point_inliers + frame.line_inliers < config.min_inliers) return out;
   frame.T_camera_world = fine.T_camera_world;
+  frame.information = fine.information;
   out.success = true;
   out.matches = pass.matches;
   out.visible_points = second.point_ids;

@@ -6,6 +6,7 @@
 // line e_dis with robust kernels and chi2 outlier rejection, then the map is
 // projected again with the refined pose in a tight window for more matches
 // and the pose optimised once more.
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -36,6 +37,9 @@ struct TrackedFrame {
   Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
   std::vector<int> point_landmark, line_landmark;
   int point_inliers = 0, line_inliers = 0;
+  // The last pose optimisation's information (PoseOptimizationResult), when
+  // the pose came from tracking.
+  std::optional<Matrix6d> information;
 };
 
 // Landmark ids to track against.

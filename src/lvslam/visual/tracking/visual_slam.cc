@@ -199,6 +199,8 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   result.keyframe = current_keyframe >= 0;
   result.T_new_old = map_correction;
   attachLidarPoses();
+  if (current_has_pose) result.pose_information = current.information;
+  result.T_world_odom = map.T_world_odom();
   return result;
 }
 

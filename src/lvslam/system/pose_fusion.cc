@@ -1,0 +1,26 @@
+#include "lvslam/system/pose_fusion.h"
+
+#include <Eigen/Cholesky>
+
+namespace lvslam::system {
+
+Matrix6d isotropicPoseInformation(double sigma_m, double sigma_rad) {
+  Matrix6d H = Matrix6d::Zero();
+  H.topLeftCorner<3, 3>().diagonal().setConstant(1.0 / (sigma_m * sigma_m));
+  H.bottomRightCorner<3, 3>().diagonal().setConstant(1.0 / (sigma_rad * sigma_rad));
+  return H;
+}
+
+Eigen::Isometry3d fusePoses(const Eigen::Isometry3d& T_camera_world_a, const Matrix6d& information_a,
+                            const Eigen::Isometry3d& T_camera_world_b, const Matrix6d& information_b) {
+  const Vector6d delta_b = logSE3(T_camera_world_b * T_camera_world_a.inverse());
+  const Eigen::LDLT<Matrix6d> sum(information_a + information_b);
+  if (sum.info() != Eigen::Success || !sum.isPositive()) return T_camera_world_a;
+  const Vector6d delta = sum.solve(information_b * delta_b);
+  if (!delta.allFinite()) return T_camera_world_a;
+  Eigen::Isometry3d T = expSE3(delta) * T_camera_world_a;
+  T.linear() = Eigen::Quaterniond(T.linear()).normalized().toRotationMatrix();
+  return T;
+}
+
+}  // namespace lvslam::system

@@ -1,0 +1,44 @@
+#pragma once
+// Output fusion: in fused mode the output pose of a frame the visual
+// subsystem tracked is the information-weighted mean of its visual pose and
+// the LiDAR odometry's pose at the same camera time, both in the visual
+// map's frame (lvslam's addition to the paper, whose output is the visual
+// pose alone; docs/system.md, "Output fusion"). The two errors are nearly
+// independent and complementary: vision pins the rotation and the image-plane
+// translation of near scenes, the LiDAR the translation everywhere.
+#include <Eigen/Geometry>
+
+#include "lvslam/core/se3.h"
+
+namespace lvslam::system {
+
+struct PoseFusionConfig {
+  bool enabled = true;
+  // The LiDAR pose at a camera time: isotropic noise of the camera centre
+  // and of the rotation.
+  double lidar_sigma_m = 0.005;
+  double lidar_sigma_deg = 0.15;
+  // The tracker's information assumes 1 px of noise per ORB level-0
+  // observation and exact landmarks; this inflates it to what it is (the
+  // map's own error included). Chosen on the seed-1 room, hall and gate
+  // among 1, 3, 6 and 10 (docs/benchmarks.md, "Output fusion").
+  double visual_pixel_sigma = 10.0;
+  // The output's correction of the LiDAR pose changes by at most this much
+  // per frame (fused_output_trajectory.h).
+  double max_step_m = 0.002;
+  double max_step_deg = 0.05;
+};
+
+// Information of a pose with isotropic camera-centre and rotation noise, for
+// the left update T_camera_world <- exp(delta) T_camera_world: to first
+// order the centre moves by -R^T rho and the rotation by phi.
+Matrix6d isotropicPoseInformation(double sigma_m, double sigma_rad);
+
+// The Gaussian product of two estimates of T_camera_world, linearised at
+// the first: delta = (H_a + H_b)^-1 H_b log(T_b T_a^-1), T = exp(delta) T_a.
+// Informations are for the left update (as above). Returns T_a when the sum
+// is singular.
+Eigen::Isometry3d fusePoses(const Eigen::Isometry3d& T_camera_world_a, const Matrix6d& information_a,
+                            const Eigen::Isometry3d& T_camera_world_b, const Matrix6d& information_b);
+
+}  // namespace lvslam::system

@@ -1,0 +1,90 @@
+#include "lvslam/system/pose_fusion.h"
+
+#include <gtest/gtest.h>
+
+#include "lvslam/system/fused_output_trajectory.h"
+
+namespace lvslam::system {
+namespace {
+
+Eigen::Vector3d centre(const Eigen::Isometry3d& T_camera_world) { return T_camera_world.inverse().translation(); }
+
+const Eigen::Isometry3d kTCameraWorld = makePose(expSO3(Eigen::Vector3d(0.3, -1.1, 0.4)), Eigen::Vector3d(1, -2, 3));
+
+// The same camera rotation, the centre moved by `offset` (world frame).
+Eigen::Isometry3d shifted(const Eigen::Isometry3d& T_camera_world, const Eigen::Vector3d& offset) {
+  return (T_camera_world.inverse() * makePose(Eigen::Matrix3d::Identity(), T_camera_world.linear() * offset))
+      .inverse();
+}
+
+TEST(PoseFusion, EqualInformationMeetsHalfway) {
+  const Eigen::Isometry3d a = kTCameraWorld;
+  const Eigen::Isometry3d b = shifted(a, Eigen::Vector3d(0.01, -0.02, 0.004));
+  const Matrix6d H = isotropicPoseInformation(0.005, 0.002);
+  const Eigen::Isometry3d fused = fusePoses(a, H, b, H);
+  EXPECT_LT((centre(fused) - 0.5 * (centre(a) + centre(b))).norm(), 1e-12);
+  EXPECT_LT(rotationAngle(fused.inverse() * a), 1e-12);
+  // Three times the information on b: a quarter of the way from b.
+  const Eigen::Isometry3d toward_b = fusePoses(a, H, b, 3.0 * H);
+  EXPECT_LT((centre(toward_b) - (0.25 * centre(a) + 0.75 * centre(b))).norm(), 1e-12);
+}
+
+// The same camera rotation, the centre moved by `offset` along the camera's axes.
+Eigen::Isometry3d shiftedInCamera(const Eigen::Isometry3d& T_camera_world, const Eigen::Vector3d& offset) {
+  return (T_camera_world.inverse() * makePose(Eigen::Matrix3d::Identity(), offset)).inverse();
+}
+
+// Each estimate knows some directions only (the camera's x from a, y and z
+// from b): the fused pose takes each from the one that knows it.
+TEST(PoseFusion, EachDirectionComesFromTheEstimateThatKnowsIt) {
+  const Eigen::Isometry3d truth = kTCameraWorld;
+  const Eigen::Isometry3d a = shiftedInCamera(truth, Eigen::Vector3d(0.0, 0.02, -0.01));  // wrong in y and z
+  const Eigen::Isometry3d b = shiftedInCamera(truth, Eigen::Vector3d(0.03, 0.0, 0.0));    // wrong in x
+  Matrix6d H_a = Matrix6d::Zero(), H_b = Matrix6d::Zero();
+  H_a(0, 0) = 1e8;  // rho_x
+  H_a.bottomRightCorner<3, 3>() = 1e8 * Eigen::Matrix3d::Identity();
+  H_b(1, 1) = H_b(2, 2) = 1e8;  // rho_y, rho_z
+  const Eigen::Isometry3d fused = fusePoses(a, H_a, b, H_b);
+  EXPECT_LT((centre(fused) - centre(truth)).norm(), 1e-12);
+  EXPECT_LT(rotationAngle(fused.inverse() * truth), 1e-12);
+}
+
+TEST(PoseFusion, WithoutInformationTheFirstEstimateStays) {
+  const Eigen::Isometry3d a = kTCameraWorld;
+  const Eigen::Isometry3d b = shifted(a, Eigen::Vector3d(0.1, 0.0, 0.0));
+  EXPECT_TRUE(fusePoses(a, Matrix6d::Zero(), b, Matrix6d::Zero()).isApprox(a, 1e-12));
+  EXPECT_TRUE(fusePoses(a, isotropicPoseInformation(0.01, 0.01), b, Matrix6d::Zero()).isApprox(a, 1e-12));
+  // All information on b: b.
+  EXPECT_LT((centre(fusePoses(a, Matrix6d::Zero(), b, isotropicPoseInformation(0.01, 0.01))) - centre(b)).norm(),
+            1e-12);
+}
+
+// The output follows the LiDAR exactly without a target, reaches a target
+// by bounded steps, and returns to the LiDAR by bounded steps when the
+// target goes (vision leaves).
+TEST(FusedOutputTrajectory, TheCorrectionComesAndGoesByBoundedSteps) {
+  const double max_m = 0.002, max_deg = 0.05;
+  FusedOutputTrajectory out(max_m, max_deg);
+  const auto lidar = [](int j) {
+    return makePose(expSO3(Eigen::Vector3d(0.0, 0.0, 0.02 * j)), Eigen::Vector3d(0.03 * j, 0.01 * j, 0.0));
+  };
+  const Eigen::Isometry3d offset = makePose(expSO3(Eigen::Vector3d(0.0, 0.003, 0.0)), Eigen::Vector3d(0.009, 0, 0));
+  EXPECT_TRUE(out.add(0.0, lidar(0), std::nullopt).isApprox(lidar(0), 1e-12));
+  Eigen::Isometry3d previous_correction = Eigen::Isometry3d::Identity();
+  for (int j = 1; j < 30; ++j) {
+    const bool vision = j < 15;
+    const Eigen::Isometry3d T = out.add(0.1 * j, lidar(j), vision ? std::optional(lidar(j) * offset) : std::nullopt);
+    const Eigen::Isometry3d correction = lidar(j).inverse() * T;
+    const Eigen::Isometry3d change = previous_correction.inverse() * correction;
+    EXPECT_LT(change.translation().norm(), max_m + 1e-12) << j;
+    EXPECT_LT(rotationAngle(change) * 180.0 / M_PI, max_deg + 1e-9) << j;
+    previous_correction = correction;
+    // 9 mm at 2 mm per frame, 0.17 deg at 0.05: the target after 5 frames.
+    if (j >= 5 && j < 15) EXPECT_TRUE(correction.isApprox(offset, 1e-9)) << j;
+    if (j >= 20) EXPECT_TRUE(T.isApprox(lidar(j), 1e-9)) << j;
+  }
+  EXPECT_EQ(out.trajectory().size(), 30u);
+}
+
+}  // namespace
+}  // namespace lvslam::system
