@@ -44,11 +44,11 @@ std::optional<MotionDisagreement> frameDisagreement(const PipelineRecords& recor
   return disagreement(records.visual[j - 1], records.visual[j], records.lidar[j - 1], records.lidar[j], T_lidar_camera);
 }
 
-// The visual pose of a frame, fused with the LiDAR's at its time when
-// output fusion is on and both are there (pose_fusion.h); in the map frame.
+// The visual pose of a frame fused with the LiDAR's at its time, when both
+// are there (pose_fusion.h); in the map frame.
 std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult& r, const LidarFrameRecord& l,
                                                 const Eigen::Isometry3d& T_lidar_camera, const PoseFusionConfig& c) {
-  if (!c.enabled || !r.pose_valid || !r.pose_information || !r.T_world_odom || !l.T_odom_lidar || !l.pose_reliable)
+  if (!r.pose_valid || !r.pose_information || !r.T_world_odom || !l.T_odom_lidar || !l.pose_reliable)
     return std::nullopt;
   const Eigen::Isometry3d T_map_camera_lidar = *r.T_world_odom * *l.T_odom_lidar * T_lidar_camera;
   const Matrix6d H_visual = *r.pose_information / (c.visual_pixel_sigma * c.visual_pixel_sigma);

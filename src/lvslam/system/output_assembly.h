@@ -1,8 +1,11 @@
 #pragma once
 // The system's output from the subsystems' per-frame records, frame by frame
 // in time order (each decision uses only that frame and earlier ones, as an
-// online system would): the detection module picks the visual or the LiDAR
-// odometry, OutputTrajectory keeps the trajectory continuous across switches.
+// online system would): the detection module decides whether vision is
+// trusted. Fused mode with output fusion: the LiDAR pose, corrected toward
+// the visual and LiDAR poses' fusion while it is (FusedOutputTrajectory);
+// the paper's output and visual mode: OutputTrajectory keeps the chosen
+// odometry continuous across switches.
 #include <map>
 #include <optional>
 #include <string>

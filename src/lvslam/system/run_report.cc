@@ -48,6 +48,7 @@ std::string frameJson(const PipelineRecords& records, const SystemOutput& output
   JsonObject o;
   o.addNumber("t", f.t).addString("source", sourceName(f.source)).addRaw("pose", f.T_world_camera ? "true" : "false");
   if (!f.problem.empty()) o.addString("problem", f.problem);
+  if (f.fused) o.addRaw("fused_with_lidar", "true");
   const VisualFrameRecord* v = j < records.visual.size() ? &records.visual[j] : nullptr;
   const LidarFrameRecord* l = j < records.lidar.size() ? &records.lidar[j] : nullptr;
   if (v) o.addRaw("visual", visualJson(*v));
@@ -85,6 +86,7 @@ std::string summaryJson(const RunSummary& s, const std::optional<eval::EvalResul
       .addCount("scans", s.scans)
       .addCount("poses", s.poses)
       .addCount("visual_output_frames", s.visual_output)
+      .addCount("fused_output_frames", s.fused_output)
       .addCount("visual_tracked_frames", s.visual_tracked)
       .addCount("visual_maps", s.visual_maps)
       .addCount("switches", s.switches)
@@ -138,7 +140,10 @@ RunSummary summarize(const PipelineRecords& records, const SystemOutput& output,
   }
   s.visual_maps = maps.size();
   if (mode == RunMode::kFused)
-    for (const FrameOutput& f : output.frames) s.visual_output += f.source == OutputSource::kVisual && f.T_world_camera;
+    for (const FrameOutput& f : output.frames) {
+      s.visual_output += f.source == OutputSource::kVisual && f.T_world_camera;
+      s.fused_output += f.fused && f.T_world_camera;
+    }
   if (mode == RunMode::kVisual) s.visual_output = s.visual_tracked;
   std::size_t lines = 0;
   for (const LidarFrameRecord& l : records.lidar) lines += l.fusion_lines.size();
@@ -166,9 +171,9 @@ std::string formatRunSummary(const RunSummary& s, const SystemOutput& output) {
     text += fmt::format("visual subsystem: tracked {} of {} frames ({:.1f} %), {} map(s)\n", s.visual_tracked,
                         s.images, 100.0 * s.visual_tracked / std::max<std::size_t>(s.images, 1), s.visual_maps);
   if (s.mode == RunMode::kFused) {
-    text += fmt::format("fusion: {:.2f} fusion lines per frame; output from vision for {} of {} frames, "
-                        "{} switch(es)\n",
-                        s.fusion_lines_per_frame, s.visual_output, s.images, s.switches);
+    text += fmt::format("fusion: {:.2f} fusion lines per frame; output from vision for {} of {} frames "
+                        "({} fused with the LiDAR pose), {} switch(es)\n",
+                        s.fusion_lines_per_frame, s.visual_output, s.images, s.fused_output, s.switches);
     for (const SwitchEvent& e : output.switches)
       text += fmt::format("  t={:.3f} -> {}: {}\n", e.t, sourceName(e.to), e.reason);
   }

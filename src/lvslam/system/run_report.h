@@ -20,6 +20,7 @@ struct RunSummary {
   std::map<std::string, std::size_t> lidar_statuses;  // scans per odometry status
   std::size_t poses = 0;           // output poses written
   std::size_t visual_output = 0;   // camera frames whose output came from vision
+  std::size_t fused_output = 0;    // of those, the ones fused with the LiDAR pose (output fusion)
   std::size_t visual_tracked = 0;  // camera frames the visual subsystem tracked
   std::size_t visual_maps = 0;     // maps the visual subsystem started
   std::size_t switches = 0;
