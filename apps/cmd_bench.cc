@@ -41,19 +41,26 @@ struct BenchArgs {
 };
 
 struct Column {
-  std::string name;
+  std::string name;    // table heading
+  std::string folder;  // its runs' folder under runs/<sequence>/
   std::vector<std::string> run_args;
 };
 
+Column ablationColumn(const std::string& name, const std::string& ablation) {
+  return {name, "fused-ablate-" + ablation, {"--mode", "fused", "--ablate", ablation}};
+}
+
 std::vector<Column> columns(bool ablations) {
-  std::vector<Column> out = {{"lidar", {"--mode", "lidar"}}, {"visual", {"--mode", "visual"}}, {"fused", {"--mode", "fused"}}};
+  std::vector<Column> out = {{"lidar", "lidar", {"--mode", "lidar"}},
+                             {"visual", "visual", {"--mode", "visual"}},
+                             {"fused", "fused", {"--mode", "fused"}}};
   if (!ablations) return out;
-  out.push_back({"fused w/o e_dir", {"--mode", "fused", "--ablate", "direction-residual"}});
-  out.push_back({"fused w/o d_v_mean", {"--mode", "fused", "--ablate", "lidar-direction-refinement"}});
-  out.push_back({"fused w/o fusion lines", {"--mode", "fused", "--ablate", "fusion-lines"}});
+  out.push_back(ablationColumn("fused w/o e_dir", "direction-residual"));
+  out.push_back(ablationColumn("fused w/o d_v_mean", "lidar-direction-refinement"));
+  out.push_back(ablationColumn("fused w/o fusion lines", "fusion-lines"));
   // lvslam's additions to the paper (docs/visual-subsystem.md, docs/architecture.md).
-  out.push_back({"fused w/o keypoint depths", {"--mode", "fused", "--ablate", "keypoint-depths"}});
-  out.push_back({"fused, paper's output", {"--mode", "fused", "--ablate", "output-fusion"}});
+  out.push_back(ablationColumn("fused w/o keypoint depths", "keypoint-depths"));
+  out.push_back(ablationColumn("fused, paper's output", "output-fusion"));
   return out;
 }
 
@@ -208,7 +215,7 @@ int runBench(const BenchArgs& args, const std::string& command) {
     for (const Column& c : cols) {
       std::cout << fmt::format("{:<16} {:<27}", name, c.name) << std::flush;
       // Sequences without the sensors of a mode are skipped by `run` with an error: shown as fail.
-      row.cells[c.name] = runCell(dir, c, config, work / "runs" / name / c.name);
+      row.cells[c.name] = runCell(dir, c, config, work / "runs" / name / c.folder);
       std::cout << system::accuracyCellText(row.cells[c.name]) << "\n";
     }
     rows.push_back(row);
