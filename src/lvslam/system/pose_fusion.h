@@ -3,7 +3,7 @@
 // subsystem tracked is the information-weighted mean of its visual pose and
 // the LiDAR odometry's pose at the same camera time, both in the visual
 // map's frame (lvslam's addition to the paper, whose output is the visual
-// pose alone; docs/system.md, "Output fusion"). The two errors are nearly
+// pose alone; docs/benchmarks.md, "Output fusion"). The two errors are nearly
 // independent and complementary: vision pins the rotation and the image-plane
 // translation of near scenes, the LiDAR the translation everywhere.
 #include <Eigen/Geometry>
