@@ -80,8 +80,12 @@ TEST(FusedOutputTrajectory, TheCorrectionComesAndGoesByBoundedSteps) {
     EXPECT_LT(rotationAngle(change) * 180.0 / M_PI, max_deg + 1e-9) << j;
     previous_correction = correction;
     // 9 mm at 2 mm per frame, 0.17 deg at 0.05: the target after 5 frames.
-    if (j >= 5 && j < 15) EXPECT_TRUE(correction.isApprox(offset, 1e-9)) << j;
-    if (j >= 20) EXPECT_TRUE(T.isApprox(lidar(j), 1e-9)) << j;
+    if (j >= 5 && j < 15) {
+      EXPECT_TRUE(correction.isApprox(offset, 1e-9)) << j;
+    }
+    if (j >= 20) {
+      EXPECT_TRUE(T.isApprox(lidar(j), 1e-9)) << j;
+    }
   }
   EXPECT_EQ(out.trajectory().size(), 30u);
 }
