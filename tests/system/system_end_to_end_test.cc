@@ -144,6 +144,16 @@ TEST(SystemEndToEnd, FusedModeUsesVisionAndStaysAccurate) {
   EXPECT_EQ(r.output.trajectory.size(), r.summary.images);  // the LiDAR bridges every frame vision lacks
   EXPECT_GT(r.summary.visual_output, r.summary.images / 4);  // vision is in use for a good part
   EXPECT_GT(r.summary.fusion_lines_per_frame, 1.0);
+  // Keyframe keypoints take their depth from the raw scans (the default),
+  // and the records say how many did.
+  std::size_t keyframes = 0, keyframes_with_depths = 0;
+  for (const VisualFrameRecord& v : r.records.visual) {
+    if (!v.result.keyframe) continue;
+    ++keyframes;
+    keyframes_with_depths += v.keypoint_depths > 0 ? 1 : 0;
+    EXPECT_LE(v.keypoint_depths, static_cast<std::size_t>(v.result.keypoints));
+  }
+  EXPECT_GT(keyframes_with_depths, keyframes * 8 / 10);
   // Output fusion: the frames vision is trusted in are fused with the LiDAR pose.
   EXPECT_GT(r.summary.fused_output, r.summary.visual_output * 9 / 10);
   EXPECT_LE(r.summary.fused_output, r.summary.visual_output);

@@ -18,6 +18,9 @@ struct VisualFrameRecord {
   double t = 0.0;
   visual::VisualFrameResult result;
   int fusion_lines_added = 0;  // landmarks created or given d_fu
+  // Keyframe keypoints given a LiDAR depth from the raw scans (the default
+  // source; LidarFrameRecord counts those from the fusion framework's features).
+  std::size_t keypoint_depths = 0;
   double extract_ms = 0.0;  // features, on the extraction thread
   double hints_ms = 0.0, track_ms = 0.0, fusion_apply_ms = 0.0;
 };

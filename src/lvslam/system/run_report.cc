@@ -40,6 +40,7 @@ std::string visualJson(const VisualFrameRecord& v) {
       .addNumber("brightness", r.brightness)
       .addNumber("contrast", r.contrast)
       .addNumber("fusion_lines_added", v.fusion_lines_added)
+      .addCount("keypoint_depths", v.keypoint_depths)  // from the raw scans
       .str();
 }
 

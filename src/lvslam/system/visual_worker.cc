@@ -1,5 +1,6 @@
 #include "lvslam/system/visual_worker.h"
 
+#include <cmath>
 #include <optional>
 
 #include "lvslam/core/error.h"
@@ -82,9 +83,11 @@ VisualFrameFeatures VisualWorker::track(visual::ExtractedImage image, double ext
     const std::optional<fusion::CameraMotion> motion = motionFromPrevious(frames_, record.result);
     const double max_dt = motion ? keypoint_depth_max_dt_ : hint_max_dt_;
     const PinholeCamera& camera = *calibration_.camera;
-    slam_.setKeypointDepths(
+    const std::vector<double> depths =
         fusion::surfaceDepths(fusion::lidarDepthHints(recent_scans_, record.t, calibration_, max_dt, motion),
-                              slam_.keypointPixels(), keypoint_depth_radius_px_, camera.width(), camera.height()));
+                              slam_.keypointPixels(), keypoint_depth_radius_px_, camera.width(), camera.height());
+    for (const double z : depths) record.keypoint_depths += std::isfinite(z) && z > 0.0 ? 1 : 0;
+    slam_.setKeypointDepths(depths);
     record.hints_ms += depth_watch.ms();
   }
   frames_.push_back(std::move(record));
