@@ -94,8 +94,9 @@ TEST(OutputTrajectory, BackInTheSameMapTheOutputRejoinsItsFirstAnchorByBoundedSt
     EXPECT_LT(rotationAngle(extra) * 180.0 / M_PI, rejoin.max_deg + 1e-9) << i;
   }
   EXPECT_LT(offset(traj[59]), 1e-9);
-  ASSERT_TRUE(out.T_world_map(0).has_value());
-  EXPECT_TRUE(out.T_world_map(0)->isApprox(Eigen::Isometry3d::Identity(), 1e-12));
+  const auto placements = out.mapPlacements();
+  ASSERT_EQ(placements.count(0), 1u);
+  EXPECT_TRUE(placements.at(0).isApprox(Eigen::Isometry3d::Identity(), 1e-12));
 }
 
 TEST(OutputTrajectory, LidarOnlyFollowsTheOdometryInTheCameraFrame) {

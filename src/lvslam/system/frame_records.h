@@ -2,6 +2,8 @@
 // What each subsystem's thread records per camera frame and per scan. Each
 // thread writes only its own records (no sharing); the output is assembled
 // from them in frame order afterwards.
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +14,11 @@
 #include "lvslam/visual/tracking/visual_slam.h"
 
 namespace lvslam::system {
+
+// Keyframe keypoints with a LiDAR depth among `depths` (NaN where none).
+inline std::size_t depthCount(const std::vector<double>& depths) {
+  return static_cast<std::size_t>(std::count_if(depths.begin(), depths.end(), [](double z) { return std::isfinite(z); }));
+}
 
 // The visual thread's view of camera frame `index`.
 struct VisualFrameRecord {

@@ -1,7 +1,5 @@
 #include "lvslam/system/lidar_worker.h"
 
-#include <cmath>
-
 #include "lvslam/core/se3.h"
 #include "lvslam/system/stopwatch.h"
 
@@ -39,7 +37,7 @@ FusionAnswer LidarWorker::addFrame(double t, const VisualFrameFeatures& features
     record.fusion_ms = watch.ms();
     record.lidar_features = out.result.lidar_features;
     record.lidar_points_refined = out.lidar_points_changed;
-    for (const double z : answer.keypoint_depths) record.keypoint_depths += std::isfinite(z) ? 1 : 0;
+    record.keypoint_depths = depthCount(answer.keypoint_depths);
     for (const fusion::FusionLine& line : out.result.lines) record.fusion_lines.push_back({line.A, line.B});
     answer.result = std::move(out.result);
   }

@@ -45,15 +45,17 @@ std::optional<MotionDisagreement> frameDisagreement(const PipelineRecords& recor
 }
 
 // The visual pose of a frame fused with the LiDAR's at its time, when both
-// are there (pose_fusion.h); in the map frame.
+// are there (pose_fusion.h): T_odom_camera, the visual pose carried into the
+// odometry frame by its map's alignment.
 std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult& r, const LidarFrameRecord& l,
                                                 const Eigen::Isometry3d& T_lidar_camera, const PoseFusionConfig& c) {
   if (!r.pose_valid || !r.pose_information || !r.T_world_odom || !l.T_odom_lidar || !l.pose_reliable)
     return std::nullopt;
-  const Eigen::Isometry3d T_map_camera_lidar = *r.T_world_odom * *l.T_odom_lidar * T_lidar_camera;
+  const Eigen::Isometry3d T_odom_camera_visual = r.T_world_odom->inverse() * r.T_world_camera;
+  const Eigen::Isometry3d T_odom_camera_lidar = *l.T_odom_lidar * T_lidar_camera;
   const Matrix6d H_visual = *r.pose_information / (c.visual_pixel_sigma * c.visual_pixel_sigma);
   const Matrix6d H_lidar = isotropicPoseInformation(c.lidar_sigma_m, c.lidar_sigma_deg * M_PI / 180.0);
-  return fusePoses(r.T_world_camera.inverse(), H_visual, T_map_camera_lidar.inverse(), H_lidar).inverse();
+  return fusePoses(T_odom_camera_visual.inverse(), H_visual, T_odom_camera_lidar.inverse(), H_lidar).inverse();
 }
 
 void lidarOutput(const PipelineRecords& records, const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
@@ -138,9 +140,7 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
     if (v.result.T_world_odom) out.T_world_map[v.result.map_id] = v.result.T_world_odom->inverse();
     if (l.T_odom_lidar) {  // none before the LiDAR's first pose
       std::optional<Eigen::Isometry3d> target;
-      if (source == OutputSource::kVisual)
-        if (const auto fused = fusedWithLidar(v.result, l, T_lidar_camera, config.output_fusion))
-          target = v.result.T_world_odom->inverse() * *fused;
+      if (source == OutputSource::kVisual) target = fusedWithLidar(v.result, l, T_lidar_camera, config.output_fusion);
       frame.fused = target.has_value();
       frame.T_world_camera = output.add(v.t, *l.T_odom_lidar * T_lidar_camera, target);
     }

@@ -14,12 +14,6 @@ std::optional<Eigen::Isometry3d> OutputTrajectory::lidarIncrement(const FrameEst
   return T_lidar_camera_.inverse() * (last_T_odom_lidar_->inverse() * *frame.T_odom_lidar) * T_lidar_camera_;
 }
 
-std::optional<Eigen::Isometry3d> OutputTrajectory::T_world_map(int map_id) const {
-  const auto it = anchors_.find(map_id);
-  if (it == anchors_.end()) return std::nullopt;
-  return it->second.first;
-}
-
 std::map<int, Eigen::Isometry3d> OutputTrajectory::mapPlacements() const {
   std::map<int, Eigen::Isometry3d> placements;
   for (const auto& [id, anchor] : anchors_) placements.emplace(id, anchor.first);

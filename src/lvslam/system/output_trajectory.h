@@ -41,10 +41,8 @@ class OutputTrajectory {
   Eigen::Isometry3d add(const FrameEstimates& frame, OutputSource source);
 
   const Trajectory& trajectory() const { return trajectory_; }
-  // Where the visual map `map_id` sits in the output world (its first
-  // anchor, which the output rejoins), when it was ever anchored.
-  std::optional<Eigen::Isometry3d> T_world_map(int map_id) const;
-  // The same for every map anchored so far.
+  // Where each visual map anchored so far sits in the output world (its
+  // first anchor, which the output rejoins): T_world_map per map id.
   std::map<int, Eigen::Isometry3d> mapPlacements() const;
 
  private:

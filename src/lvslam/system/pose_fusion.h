@@ -1,8 +1,8 @@
 #pragma once
 // Output fusion: in fused mode the output pose of a frame the visual
 // subsystem tracked is the information-weighted mean of its visual pose and
-// the LiDAR odometry's pose at the same camera time, both in the visual
-// map's frame (lvslam's addition to the paper, whose output is the visual
+// the LiDAR odometry's pose at the same camera time, both in the odometry
+// frame (lvslam's addition to the paper, whose output is the visual
 // pose alone; docs/benchmarks.md, "Output fusion"). The two errors are nearly
 // independent and complementary: vision pins the rotation and the image-plane
 // translation of near scenes, the LiDAR the translation everywhere.

@@ -1,6 +1,5 @@
 #include "lvslam/system/visual_worker.h"
 
-#include <cmath>
 #include <optional>
 
 #include "lvslam/core/error.h"
@@ -86,7 +85,7 @@ VisualFrameFeatures VisualWorker::track(visual::ExtractedImage image, double ext
     const std::vector<double> depths =
         fusion::surfaceDepths(fusion::lidarDepthHints(recent_scans_, record.t, calibration_, max_dt, motion),
                               slam_.keypointPixels(), keypoint_depth_radius_px_, camera.width(), camera.height());
-    for (const double z : depths) record.keypoint_depths += std::isfinite(z) && z > 0.0 ? 1 : 0;
+    record.keypoint_depths = depthCount(depths);
     slam_.setKeypointDepths(depths);
     record.hints_ms += depth_watch.ms();
   }
