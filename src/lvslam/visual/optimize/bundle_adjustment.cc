@@ -1,25 +1,22 @@
 #include "lvslam/visual/optimize/bundle_adjustment.h"
 
-#include <array>
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
-
-#include <ceres/loss_function.h>
-#include <ceres/manifold.h>
-#include <ceres/ordered_groups.h>
-#include <ceres/problem.h>
-#include <ceres/solver.h>
+#include <tuple>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/se3.h"
 #include "lvslam/visual/geometry/line_projection.h"
+#include "lvslam/visual/geometry/orthonormal_line.h"
+#include "lvslam/visual/optimize/schur_system.h"
 #include "lvslam/visual/residuals/line_direction.h"
 #include "lvslam/visual/residuals/line_reprojection.h"
-#include "lvslam/visual/residuals/orthonormal_line_manifold.h"
 #include "lvslam/visual/residuals/point_depth.h"
 #include "lvslam/visual/residuals/point_reprojection.h"
 #include "lvslam/visual/residuals/pose_prior.h"
-#include "lvslam/visual/residuals/se3_manifold.h"
 
 namespace lvslam::visual {
 
@@ -72,218 +69,351 @@ void validate(const BundleAdjustmentConfig& c) {
     throw Error(kWhere, "prior_sigma_m, prior_sigma_deg and prior_huber_delta must be positive");
 }
 
-// Parameter storage, one contiguous block per variable.
-struct Blocks {
-  std::vector<PoseBlock> poses;
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<double, kLineBlockSize>> lines;
+double huberCost(double s, double delta) { return s <= delta * delta ? s : 2.0 * delta * std::sqrt(s) - delta * delta; }
+double huberWeight(double s, double delta) { return s <= delta * delta ? 1.0 : delta / std::sqrt(s); }
+
+// The value of every block; variables change, constants stay.
+struct Estimate {
+  std::vector<Eigen::Isometry3d> poses;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Vector6d> lines;  // unit Plücker (m, d)
 };
 
-Blocks makeBlocks(const BundleAdjustmentProblem& p) {
-  Blocks b;
-  for (const BaKeyframe& k : p.keyframes) b.poses.push_back(toPoseBlock(k.T_camera_world));
-  for (const BaPoint& pt : p.points) b.points.push_back({pt.p_world.x(), pt.p_world.y(), pt.p_world.z()});
-  for (const BaLine& l : p.lines) {
-    const Vector6d v = l.line_world.vector().normalized();
-    b.lines.push_back({v[0], v[1], v[2], v[3], v[4], v[5]});
+Eigen::Isometry3d leftUpdate(const Eigen::Matrix<double, 6, 1>& delta, const Eigen::Isometry3d& T) {
+  Eigen::Isometry3d out = expSE3(delta) * T;
+  out.linear() = Eigen::Quaterniond(out.linear()).normalized().toRotationMatrix();  // no drift off SO(3)
+  return out;
+}
+
+OrthonormalLine orthonormalOf(const Vector6d& L) { return OrthonormalLine::fromPlucker(PluckerLine::fromVector(L)); }
+
+// w J' J and w J' r of one residual into the pose block, the landmark block
+// and their coupling (IRLS weight w = rho'(|r|^2): for Huber this is what
+// Ceres' loss corrector does too).
+template <int R, int D>
+void accumulate(SchurSystem& system, int pose, SchurLandmark<D>* landmark, int slot, double w,
+                const Eigen::Matrix<double, R, 1>& r, const Eigen::Matrix<double, R, 6>& J_pose,
+                const Eigen::Matrix<double, R, D>& J_landmark) {
+  if (pose >= 0) {
+    system.poseH(pose).noalias() += w * J_pose.transpose() * J_pose;
+    system.poseG(pose).noalias() += w * J_pose.transpose() * r;
   }
-  return b;
+  if (!landmark) return;
+  landmark->H.noalias() += w * J_landmark.transpose() * J_landmark;
+  landmark->g.noalias() += w * J_landmark.transpose() * r;
+  if (pose >= 0) landmark->couplings[slot].noalias() += w * J_pose.transpose() * J_landmark;
 }
 
-ceres::Solver::Options solverOptions(const BundleAdjustmentConfig& config, int iterations) {
-  ceres::Solver::Options o;
-  o.linear_solver_type = ceres::SPARSE_SCHUR;  // lines join the poses in the reduced system
-  // Eigen's sparse Cholesky: as fast as CHOLMOD on these small reduced
-  // systems (docs/benchmarks.md), with no BLAS threads beside ours.
-  o.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
-  o.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  o.max_num_iterations = iterations;
-  o.num_threads = config.num_threads;
-  o.logging_type = ceres::SILENT;
-  o.minimizer_progress_to_stdout = false;
-  return o;
-}
-
-// Squared whitened residual (no loss) of a residual block of 1 or 2 rows (a
-// 1-row block leaves r[1] at 0).
-double chi2Of(const ceres::Problem& problem, ceres::ResidualBlockId id) {
-  double cost = 0.0;
-  std::array<double, 2> r{};
-  if (!problem.EvaluateResidualBlock(id, false, &cost, r.data(), nullptr)) return INFINITY;
-  return r[0] * r[0] + r[1] * r[1];
-}
-
-// The Ceres problem of one BA run: parameter blocks, residuals and their ids.
-class CeresBundleAdjustment {
+// Levenberg-Marquardt on the local BA with every landmark eliminated
+// (optimize/schur_system.h), its steps and stopping rules those of Ceres'
+// trust region (Nielsen's radius update, function / parameter / gradient
+// tolerances), so that the two stages behave as they did under Ceres.
+class LocalBundleAdjustment {
  public:
-  CeresBundleAdjustment(BundleAdjustmentProblem& p, const BundleAdjustmentConfig& config)
-      : p_(p), config_(config), b_(makeBlocks(p)), huber_(config.huber_delta),
-        direction_huber_(config.direction_huber_delta), depth_huber_(config.depth_huber_delta),
-        prior_huber_(config.prior_huber_delta),
-        problem_(problemOptions()),
+  struct Summary {
+    bool usable = false;
+    double initial_cost = 0.0, final_cost = 0.0;
+  };
+
+  LocalBundleAdjustment(BundleAdjustmentProblem& p, const BundleAdjustmentConfig& config)
+      : p_(p), config_(config),
         K_line_(lineProjectionMatrix(p.intrinsics.fx, p.intrinsics.fy, p.intrinsics.cx, p.intrinsics.cy)),
-        point_ids_(p.point_observations.size(), nullptr), depth_ids_(p.point_observations.size(), nullptr),
-        line_ids_(p.line_observations.size(), nullptr),
-        pose_used_(b_.poses.size(), false), point_used_(b_.points.size(), false), line_used_(b_.lines.size(), false) {
-    addPointResiduals();
-    addDepthResiduals();
-    addLineResiduals();
-    addPriorResiduals();
-    configureBlocks();
+        x_(initialEstimate(p)),
+        point_active_(p.point_observations.size(), false), depth_active_(p.point_observations.size(), false),
+        line_active_(p.line_observations.size(), false), direction_active_(p.lines.size(), false),
+        prior_active_(p.keyframes.size(), false) {
+    chooseResiduals();
+    numberVariables();
   }
 
-  bool empty() const { return problem_.NumResidualBlocks() == 0; }
+  bool empty() const {
+    const auto any = [](const std::vector<bool>& v) { return std::find(v.begin(), v.end(), true) != v.end(); };
+    return !any(point_active_) && !any(line_active_) && !any(direction_active_) && !any(prior_active_);
+  }
 
-  ceres::Solver::Summary solve(int iterations) {
-    ceres::Solver::Summary summary;
-    ceres::Solver::Options options = solverOptions(config_, iterations);
-    options.linear_solver_ordering = eliminationOrdering();
-    ceres::Solve(options, &problem_, &summary);
+  Summary solve(int iterations) {
+    Summary summary;
+    std::optional<double> cost = evaluate(x_, system_.get());
+    if (!cost) return summary;  // Ceres: the initial evaluation failed
+    summary.usable = true;
+    summary.initial_cost = summary.final_cost = *cost;
+    double radius = kInitialRadius, decrease_factor = 2.0;
+    SchurSystem::Step step;
+    for (int it = 0; it < iterations; ++it) {
+      if (system_->maxGradient() <= kGradientTolerance) break;
+      const bool solved = system_->solve(1.0 / radius, step);
+      if (solved && stepNorm(step) <= kParameterTolerance * (stateNorm() + kParameterTolerance)) break;
+      std::optional<double> new_cost;
+      double model = 0.0;
+      Estimate candidate;
+      if (solved) {
+        candidate = plus(x_, step);
+        new_cost = evaluate(candidate, nullptr);
+        model = system_->modelDecrease(step);
+      }
+      const double decrease = new_cost ? *cost - *new_cost : 0.0;
+      const bool flat = new_cost && std::abs(decrease) <= kFunctionTolerance * *cost;
+      const double rho = new_cost && model > 0.0 ? decrease / model : -1.0;
+      if (rho <= kMinRelativeDecrease) {
+        radius /= decrease_factor;
+        decrease_factor *= 2.0;
+        if (flat || radius < kMinRadius) break;
+        continue;
+      }
+      x_ = std::move(candidate);
+      radius = std::min(kMaxRadius, radius / std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3)));
+      decrease_factor = 2.0;
+      cost = evaluate(x_, system_.get());
+      if (!cost) return summary;  // cannot happen: the candidate evaluated
+      summary.final_cost = *cost;
+      if (flat) break;
+    }
     return summary;
   }
 
-  // Drops chi2 outliers from the problem (ORB-SLAM's local BA between stages).
+  // Drops chi2 outliers (ORB-SLAM's local BA between stages).
   void classify(BundleAdjustmentResult& result) {
-    classify(point_ids_, result.point_inlier, config_.chi2_point);
-    for (size_t i = 0; i < depth_ids_.size(); ++i) {  // an outlier observation takes its depth along
-      if (depth_ids_[i] && !point_ids_[i]) {
-        problem_.RemoveResidualBlock(depth_ids_[i]);
-        depth_ids_[i] = nullptr;
-        result.depth_inlier[i] = false;
-      }
+    for (size_t i = 0; i < point_active_.size(); ++i) {
+      if (!point_active_[i]) continue;
+      const BaPointObservation& o = p_.point_observations[i];
+      const Eigen::Isometry3d& T = x_.poses[o.keyframe];
+      Eigen::Vector2d r;
+      const bool ok = PointReprojection::evaluate(T.linear(), T.translation(), x_.points[o.point], o.pixel,
+                                                  p_.intrinsics, std::sqrt(o.inv_sigma2), r, nullptr, nullptr);
+      point_active_[i] = result.point_inlier[i] = ok && r.squaredNorm() <= config_.chi2_point;
+      if (!depth_active_[i]) continue;
+      double e = 0.0;
+      const bool depth_ok = point_active_[i] && PointDepth::evaluate(T.linear(), T.translation(), x_.points[o.point],
+                                                                      o.depth, depthInvSigma(o), e, nullptr, nullptr);
+      depth_active_[i] = result.depth_inlier[i] = depth_ok && e * e <= config_.chi2_depth;  // goes with its point
     }
-    classify(depth_ids_, result.depth_inlier, config_.chi2_depth);
-    classify(line_ids_, result.line_inlier, config_.chi2_line);
+    for (size_t i = 0; i < line_active_.size(); ++i) {
+      if (!line_active_[i]) continue;
+      const BaLineObservation& o = p_.line_observations[i];
+      const Eigen::Isometry3d& T = x_.poses[o.keyframe];
+      Eigen::Vector2d r;
+      const bool ok = LineReprojection::evaluate(T.linear(), T.translation(), x_.lines[o.line], homogeneous(o.start),
+                                                 homogeneous(o.end), K_line_, std::sqrt(o.inv_sigma2), r, nullptr,
+                                                 nullptr);
+      line_active_[i] = result.line_inlier[i] = ok && r.squaredNorm() <= config_.chi2_line;
+    }
   }
 
   void writeBack() const {
-    for (size_t k = 0; k < b_.poses.size(); ++k) p_.keyframes[k].T_camera_world = fromPoseBlock(b_.poses[k].data());
-    for (size_t j = 0; j < b_.points.size(); ++j) p_.points[j].p_world = Eigen::Vector3d(b_.points[j].data());
-    for (size_t j = 0; j < b_.lines.size(); ++j) {
-      p_.lines[j].line_world = PluckerLine::fromVector(Eigen::Map<const Vector6d>(b_.lines[j].data()));
-    }
+    for (size_t k = 0; k < x_.poses.size(); ++k) p_.keyframes[k].T_camera_world = x_.poses[k];
+    for (size_t j = 0; j < x_.points.size(); ++j) p_.points[j].p_world = x_.points[j];
+    for (size_t j = 0; j < x_.lines.size(); ++j) p_.lines[j].line_world = PluckerLine::fromVector(x_.lines[j]);
   }
 
  private:
-  static ceres::Problem::Options problemOptions() {
-    ceres::Problem::Options o;
-    o.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-    o.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-    o.enable_fast_removal = true;
-    return o;
+  // Ceres' defaults for its trust region, kept when it left this path.
+  static constexpr double kInitialRadius = 1e4, kMaxRadius = 1e16, kMinRadius = 1e-32;
+  static constexpr double kMinRelativeDecrease = 1e-3, kFunctionTolerance = 1e-6;
+  static constexpr double kParameterTolerance = 1e-8, kGradientTolerance = 1e-10;
+
+  static Estimate initialEstimate(const BundleAdjustmentProblem& p) {
+    Estimate x;
+    for (const BaKeyframe& k : p.keyframes) x.poses.push_back(k.T_camera_world);
+    for (const BaPoint& pt : p.points) x.points.push_back(pt.p_world);
+    for (const BaLine& l : p.lines) x.lines.push_back(l.line_world.vector().normalized());
+    return x;
   }
 
-  void addPointResiduals() {
-    const PinholeIntrinsics& K = p_.intrinsics;
+  static Eigen::Vector3d homogeneous(const Eigen::Vector2d& px) { return {px.x(), px.y(), 1.0}; }
+  double depthInvSigma(const BaPointObservation& o) const { return 1.0 / (config_.depth_sigma_ratio * o.depth); }
+
+  // The residuals that exist from the start: reprojections in front of their
+  // camera (the rest are outliers from the start), depths of those, lines,
+  // directions of used lines, priors of free poses the images constrain (a
+  // prior alone would just copy the LiDAR).
+  void chooseResiduals() {
+    pose_used_.assign(p_.keyframes.size(), false);
+    point_used_.assign(p_.points.size(), false);
+    line_used_.assign(p_.lines.size(), false);
     for (size_t i = 0; i < p_.point_observations.size(); ++i) {
       const BaPointObservation& o = p_.point_observations[i];
-      const double sqrt_info = std::sqrt(o.inv_sigma2);
-      const Eigen::Isometry3d& T = p_.keyframes[o.keyframe].T_camera_world;
+      const Eigen::Isometry3d& T = x_.poses[o.keyframe];
       Eigen::Vector2d r;
-      if (!o.pixel.allFinite() || !PointReprojection::evaluate(T.linear(), T.translation(), p_.points[o.point].p_world,
-                                                               o.pixel, K, sqrt_info, r, nullptr, nullptr)) {
-        continue;  // behind the camera or bad input: an outlier from the start
-      }
-      point_ids_[i] = problem_.AddResidualBlock(new PointReprojectionCost(o.pixel, K, sqrt_info), &huber_,
-                                                b_.poses[o.keyframe].data(), b_.points[o.point].data());
+      if (!o.pixel.allFinite() || !PointReprojection::evaluate(T.linear(), T.translation(), x_.points[o.point],
+                                                               o.pixel, p_.intrinsics, 1.0, r, nullptr, nullptr))
+        continue;
+      point_active_[i] = true;
+      depth_active_[i] = std::isfinite(o.depth);
       pose_used_[o.keyframe] = point_used_[o.point] = true;
     }
-  }
-
-  // Only observations whose reprojection term exists (in front of the camera).
-  void addDepthResiduals() {
-    for (size_t i = 0; i < p_.point_observations.size(); ++i) {
-      const BaPointObservation& o = p_.point_observations[i];
-      if (!point_ids_[i] || !std::isfinite(o.depth)) continue;
-      const double inv_sigma = 1.0 / (config_.depth_sigma_ratio * o.depth);
-      depth_ids_[i] = problem_.AddResidualBlock(new PointDepthCost(o.depth, inv_sigma), &depth_huber_,
-                                                b_.poses[o.keyframe].data(), b_.points[o.point].data());
-    }
-  }
-
-  void addLineResiduals() {
     for (size_t i = 0; i < p_.line_observations.size(); ++i) {
       const BaLineObservation& o = p_.line_observations[i];
       if (!o.start.allFinite() || !o.end.allFinite()) continue;
-      line_ids_[i] = problem_.AddResidualBlock(
-          new LineReprojectionCost(o.start, o.end, K_line_, std::sqrt(o.inv_sigma2)), &huber_,
-          b_.poses[o.keyframe].data(), b_.lines[o.line].data());
+      line_active_[i] = true;
       pose_used_[o.keyframe] = line_used_[o.line] = true;
     }
-    for (size_t j = 0; j < b_.lines.size(); ++j) {
+    fusion_unit_.resize(p_.lines.size(), Eigen::Vector3d::Zero());
+    for (size_t j = 0; j < p_.lines.size(); ++j) {
       const auto& d_fu = p_.lines[j].fusion_direction;
       if (!config_.use_direction_residual || !line_used_[j] || !d_fu || !(d_fu->norm() > 0.0)) continue;
-      problem_.AddResidualBlock(new LineDirectionCost(*d_fu, config_.direction_weight), &direction_huber_,
-                                b_.lines[j].data());
+      direction_active_[j] = true;
+      fusion_unit_[j] = d_fu->normalized();
+    }
+    for (size_t k = 0; k < p_.keyframes.size(); ++k)
+      prior_active_[k] = p_.keyframes[k].prior_T_camera_world && pose_used_[k] && !p_.keyframes[k].fixed;
+  }
+
+  // Unknowns: used blocks not held fixed; -1 marks a constant.
+  void numberVariables() {
+    const auto number = [](const std::vector<bool>& used, auto fixed) {
+      std::vector<int> index(used.size(), -1);
+      int n = 0;
+      for (size_t i = 0; i < used.size(); ++i)
+        if (used[i] && !fixed(i)) index[i] = n++;
+      return std::make_pair(index, n);
+    };
+    int poses = 0, points = 0, lines = 0;
+    std::tie(pose_var_, poses) = number(pose_used_, [&](size_t k) { return p_.keyframes[k].fixed; });
+    std::tie(point_var_, points) = number(point_used_, [&](size_t j) { return p_.points[j].fixed; });
+    std::tie(line_var_, lines) = number(line_used_, [&](size_t j) { return p_.lines[j].fixed; });
+    system_ = std::make_unique<SchurSystem>(poses, points, lines);
+    point_slot_.assign(p_.point_observations.size(), -1);
+    line_slot_.assign(p_.line_observations.size(), -1);
+    for (size_t i = 0; i < point_slot_.size(); ++i) {
+      const BaPointObservation& o = p_.point_observations[i];
+      if (point_active_[i] && pose_var_[o.keyframe] >= 0 && point_var_[o.point] >= 0)
+        point_slot_[i] = system_->pointSlot(point_var_[o.point], pose_var_[o.keyframe]);
+    }
+    for (size_t i = 0; i < line_slot_.size(); ++i) {
+      const BaLineObservation& o = p_.line_observations[i];
+      if (line_active_[i] && pose_var_[o.keyframe] >= 0 && line_var_[o.line] >= 0)
+        line_slot_[i] = system_->lineSlot(line_var_[o.line], pose_var_[o.keyframe]);
     }
   }
 
-  // Only for poses the images constrain: a prior alone would just copy the LiDAR.
-  void addPriorResiduals() {
-    const double sigma_r = config_.prior_sigma_deg * M_PI / 180.0;
-    for (size_t k = 0; k < b_.poses.size(); ++k) {
-      const auto& prior = p_.keyframes[k].prior_T_camera_world;
-      if (!prior || !pose_used_[k] || p_.keyframes[k].fixed) continue;
-      problem_.AddResidualBlock(new PosePriorCost(*prior, config_.prior_sigma_m, sigma_r), &prior_huber_,
-                                b_.poses[k].data());
+  // The total robust cost 1/2 sum rho(|r|^2) at x and, given a system, its
+  // normal equations there. Empty when a residual cannot be evaluated (a
+  // point behind its camera): Ceres rejects such a step too.
+  std::optional<double> evaluate(const Estimate& x, SchurSystem* system) const {
+    if (system) system->setZero();
+    double cost = 0.0;
+    const auto robust = [&cost](double s, double delta) {
+      cost += 0.5 * huberCost(s, delta);
+      return huberWeight(s, delta);
+    };
+    for (size_t i = 0; i < point_active_.size(); ++i) {
+      if (!point_active_[i]) continue;
+      const BaPointObservation& o = p_.point_observations[i];
+      const Eigen::Isometry3d& T = x.poses[o.keyframe];
+      const int a = system ? pose_var_[o.keyframe] : -1, j = system ? point_var_[o.point] : -1;
+      SchurLandmark<3>* point = j >= 0 ? &system->point(j) : nullptr;
+      Eigen::Vector2d r;
+      Eigen::Matrix<double, 2, 6> J_pose;
+      Eigen::Matrix<double, 2, 3> J_point;
+      if (!PointReprojection::evaluate(T.linear(), T.translation(), x.points[o.point], o.pixel, p_.intrinsics,
+                                       std::sqrt(o.inv_sigma2), r, a >= 0 ? &J_pose : nullptr,
+                                       point ? &J_point : nullptr))
+        return std::nullopt;
+      const double w = robust(r.squaredNorm(), config_.huber_delta);
+      if (system) accumulate<2, 3>(*system, a, point, point_slot_[i], w, r, J_pose, J_point);
+      if (!depth_active_[i]) continue;
+      Eigen::Matrix<double, 1, 1> e;
+      Eigen::Matrix<double, 1, 6> Jd_pose;
+      Eigen::Matrix<double, 1, 3> Jd_point;
+      if (!PointDepth::evaluate(T.linear(), T.translation(), x.points[o.point], o.depth, depthInvSigma(o), e[0],
+                                a >= 0 ? &Jd_pose : nullptr, point ? &Jd_point : nullptr))
+        return std::nullopt;
+      const double wd = robust(e[0] * e[0], config_.depth_huber_delta);
+      if (system) accumulate<1, 3>(*system, a, point, point_slot_[i], wd, e, Jd_pose, Jd_point);
     }
+    std::vector<Eigen::Matrix<double, 6, 4>> plus_jacobians;
+    if (system) {
+      plus_jacobians.resize(x.lines.size());
+      for (size_t j = 0; j < x.lines.size(); ++j)
+        if (line_var_[j] >= 0) plus_jacobians[j] = orthonormalPlusJacobian(orthonormalOf(x.lines[j]));
+    }
+    for (size_t i = 0; i < line_active_.size(); ++i) {
+      if (!line_active_[i]) continue;
+      const BaLineObservation& o = p_.line_observations[i];
+      const Eigen::Isometry3d& T = x.poses[o.keyframe];
+      const int a = system ? pose_var_[o.keyframe] : -1, j = system ? line_var_[o.line] : -1;
+      SchurLandmark<4>* line = j >= 0 ? &system->line(j) : nullptr;
+      Eigen::Vector2d r;
+      Eigen::Matrix<double, 2, 6> J_pose, J_plucker;
+      if (!LineReprojection::evaluate(T.linear(), T.translation(), x.lines[o.line], homogeneous(o.start),
+                                      homogeneous(o.end), K_line_, std::sqrt(o.inv_sigma2), r,
+                                      a >= 0 ? &J_pose : nullptr, line ? &J_plucker : nullptr))
+        return std::nullopt;
+      const double w = robust(r.squaredNorm(), config_.huber_delta);
+      if (!system) continue;
+      const Eigen::Matrix<double, 2, 4> J_line = line ? Eigen::Matrix<double, 2, 4>(J_plucker * plus_jacobians[o.line])
+                                                      : Eigen::Matrix<double, 2, 4>::Zero();
+      accumulate<2, 4>(*system, a, line, line_slot_[i], w, r, J_pose, J_line);
+    }
+    for (size_t j = 0; j < direction_active_.size(); ++j) {
+      if (!direction_active_[j]) continue;
+      const int v = system ? line_var_[j] : -1;
+      Eigen::Matrix<double, 1, 1> e;
+      Eigen::Matrix<double, 1, 3> J_d;
+      if (!LineDirection::evaluate(x.lines[j].tail<3>(), fusion_unit_[j], config_.direction_weight, e[0],
+                                   v >= 0 ? &J_d : nullptr))
+        return std::nullopt;
+      const double w = robust(e[0] * e[0], config_.direction_huber_delta);
+      if (v < 0) continue;
+      // Only d enters: the last three rows of the plus Jacobian.
+      const Eigen::Matrix<double, 1, 4> J_line = J_d * plus_jacobians[j].bottomRows<3>();
+      accumulate<1, 4>(*system, -1, &system->line(v), -1, w, e, Eigen::Matrix<double, 1, 6>::Zero(), J_line);
+    }
+    const double inv_sigma_t = 1.0 / config_.prior_sigma_m;
+    const double inv_sigma_r = 1.0 / (config_.prior_sigma_deg * M_PI / 180.0);
+    for (size_t k = 0; k < prior_active_.size(); ++k) {
+      if (!prior_active_[k]) continue;
+      const int a = system ? pose_var_[k] : -1;
+      Eigen::Matrix<double, 6, 1> r;
+      Eigen::Matrix<double, 6, 6> J;
+      PosePrior::evaluate(x.poses[k], *p_.keyframes[k].prior_T_camera_world, inv_sigma_t, inv_sigma_r, r,
+                          a >= 0 ? &J : nullptr);
+      const double w = robust(r.squaredNorm(), config_.prior_huber_delta);
+      if (a >= 0) accumulate<6, 3>(*system, a, nullptr, -1, w, r, J, Eigen::Matrix<double, 6, 3>::Zero());
+    }
+    return cost;
   }
 
-  void configureBlocks() {
-    for (size_t k = 0; k < b_.poses.size(); ++k) {
-      if (!pose_used_[k]) continue;
-      problem_.SetManifold(b_.poses[k].data(), &pose_manifold_);
-      if (p_.keyframes[k].fixed) problem_.SetParameterBlockConstant(b_.poses[k].data());
-    }
-    for (size_t j = 0; j < b_.points.size(); ++j) {
-      if (point_used_[j] && p_.points[j].fixed) problem_.SetParameterBlockConstant(b_.points[j].data());
-    }
-    for (size_t j = 0; j < b_.lines.size(); ++j) {
-      if (!line_used_[j]) continue;
-      problem_.SetManifold(b_.lines[j].data(), &line_manifold_);
-      if (p_.lines[j].fixed) problem_.SetParameterBlockConstant(b_.lines[j].data());
-    }
+  Estimate plus(const Estimate& x, const SchurSystem::Step& step) const {
+    Estimate out = x;
+    for (size_t k = 0; k < out.poses.size(); ++k)
+      if (pose_var_[k] >= 0) out.poses[k] = leftUpdate(step.poses.segment<6>(6 * pose_var_[k]), x.poses[k]);
+    for (size_t j = 0; j < out.points.size(); ++j)
+      if (point_var_[j] >= 0) out.points[j] += step.points[point_var_[j]];
+    for (size_t j = 0; j < out.lines.size(); ++j)
+      if (line_var_[j] >= 0) out.lines[j] = orthonormalOf(x.lines[j]).plus(step.lines[line_var_[j]]).toPlucker().vector();
+    return out;
   }
 
-  // Points are eliminated first, poses and lines form the reduced system.
-  // Ceres' own choice also eliminates the lines, and the mixed block sizes
-  // then run its generic Schur kernels; with points alone it uses the
-  // fixed-size <2, 3, 6> ones. Null (automatic) when no point takes part.
-  // Ceres orders a group by address: poses and lines get a group each, since
-  // their two vectors lie in the heap in no fixed order (--deterministic).
-  std::shared_ptr<ceres::ParameterBlockOrdering> eliminationOrdering() {
-    auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
-    for (size_t j = 0; j < b_.points.size(); ++j)
-      if (point_used_[j]) ordering->AddElementToGroup(b_.points[j].data(), 0);
-    if (ordering->NumElements() == 0) return nullptr;
-    for (size_t k = 0; k < b_.poses.size(); ++k)
-      if (pose_used_[k]) ordering->AddElementToGroup(b_.poses[k].data(), 1);
-    for (size_t j = 0; j < b_.lines.size(); ++j)
-      if (line_used_[j]) ordering->AddElementToGroup(b_.lines[j].data(), 2);
-    return ordering;
+  double stepNorm(const SchurSystem::Step& step) const {
+    double s = step.poses.squaredNorm();
+    for (const Eigen::Vector3d& d : step.points) s += d.squaredNorm();
+    for (const Eigen::Vector4d& d : step.lines) s += d.squaredNorm();
+    return std::sqrt(s);
   }
 
-  void classify(std::vector<ceres::ResidualBlockId>& ids, std::vector<bool>& inlier, double chi2) {
-    for (size_t i = 0; i < ids.size(); ++i) {
-      if (!ids[i]) continue;
-      inlier[i] = chi2Of(problem_, ids[i]) <= chi2;
-      if (!inlier[i]) {
-        problem_.RemoveResidualBlock(ids[i]);
-        ids[i] = nullptr;
-      }
-    }
+  // |x| over the unknowns' ambient values, as Ceres measures it ([t, q] poses).
+  double stateNorm() const {
+    double s = 0.0;
+    for (size_t k = 0; k < x_.poses.size(); ++k)
+      if (pose_var_[k] >= 0) s += x_.poses[k].translation().squaredNorm() + 1.0;
+    for (size_t j = 0; j < x_.points.size(); ++j)
+      if (point_var_[j] >= 0) s += x_.points[j].squaredNorm();
+    for (size_t j = 0; j < x_.lines.size(); ++j)
+      if (line_var_[j] >= 0) s += 1.0;
+    return std::sqrt(s);
   }
 
   BundleAdjustmentProblem& p_;
   const BundleAdjustmentConfig& config_;
-  Blocks b_;
-  Se3LeftManifold pose_manifold_;
-  OrthonormalLineManifold line_manifold_;
-  ceres::HuberLoss huber_, direction_huber_, depth_huber_, prior_huber_;
-  ceres::Problem problem_;  // after the manifolds and losses it borrows
   Eigen::Matrix3d K_line_;
-  std::vector<ceres::ResidualBlockId> point_ids_, depth_ids_, line_ids_;
+  Estimate x_;
+  std::vector<bool> point_active_, depth_active_, line_active_, direction_active_, prior_active_;
   std::vector<bool> pose_used_, point_used_, line_used_;
+  std::vector<Eigen::Vector3d> fusion_unit_;
+  std::vector<int> pose_var_, point_var_, line_var_;  // unknown index, -1: constant
+  std::vector<int> point_slot_, line_slot_;            // coupling block of each observation
+  std::unique_ptr<SchurSystem> system_;
 };
 
 }  // namespace
@@ -295,9 +425,9 @@ BundleAdjustmentResult runBundleAdjustment(BundleAdjustmentProblem& p, const Bun
   result.point_inlier.assign(p.point_observations.size(), false);
   result.line_inlier.assign(p.line_observations.size(), false);
   result.depth_inlier.assign(p.point_observations.size(), false);
-  CeresBundleAdjustment ba(p, config);
+  LocalBundleAdjustment ba(p, config);
   if (ba.empty()) return result;
-  ceres::Solver::Summary summary = ba.solve(config.first_stage_iterations);
+  LocalBundleAdjustment::Summary summary = ba.solve(config.first_stage_iterations);
   result.initial_cost = summary.initial_cost;
   ba.classify(result);
   if (config.second_stage_iterations > 0 && !ba.empty()) {
@@ -306,7 +436,7 @@ BundleAdjustmentResult runBundleAdjustment(BundleAdjustmentProblem& p, const Bun
   }
   result.final_cost = summary.final_cost;
   ba.writeBack();
-  result.usable = summary.IsSolutionUsable();
+  result.usable = summary.usable;
   return result;
 }
 

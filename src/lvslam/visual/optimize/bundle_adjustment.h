@@ -3,7 +3,7 @@
 // line landmarks (Structure PLP-SLAM's point-line BA with the line
 // direction term of Cao et al., Sec. III-D). Plain data in and out: the map
 // copies its local window in, runs this, and copies the result back.
-// Ceres lives only in the .cc.
+// Solved by Levenberg-Marquardt on the Schur complement (schur_system.h).
 #include <limits>
 #include <optional>
 #include <vector>
@@ -46,7 +46,6 @@ struct BundleAdjustmentConfig {
   double prior_sigma_m = 0.01;
   double prior_sigma_deg = 0.2;
   double prior_huber_delta = 3.548519; // sqrt(12.592)
-  int num_threads = 1;
 };
 
 struct BaKeyframe {
