@@ -23,13 +23,14 @@ TEST(VisualConfig, AbsentKeysKeepDefaultsAndPresentOnesOverride) {
   EXPECT_EQ(defaults.features.orb.max_features, OrbExtractorConfig{}.max_features);
   const VisualConfig c = load(
       "visual:\n"
-      "  orb: {max_features: 800, num_levels: 6}\n"
+      "  orb: {max_features: 800, num_levels: 6, candidate_factor: 4}\n"
       "  lines: {enabled: false, min_length_ratio: 0.1}\n"
       "  pose: {rounds: 3}\n"
       "  bundle_adjustment: {window_size: 7, direction_weight: 200.0, use_direction_residual: false}\n"
       "  initializer: {min_parallax_deg: 2.0}\n");
   EXPECT_EQ(c.features.orb.max_features, 800);
   EXPECT_EQ(c.features.orb.num_levels, 6);
+  EXPECT_EQ(c.features.orb.candidate_factor, 4.0);
   EXPECT_FALSE(c.features.extract_lines);
   EXPECT_DOUBLE_EQ(c.features.lines.min_length_ratio, 0.1);
   EXPECT_EQ(c.pose.rounds, 3);
@@ -106,6 +107,7 @@ TEST(VisualConfig, BadValuesAndUnknownKeysNameTheKey) {
   EXPECT_NE(typo.find("max_featurs"), std::string::npos) << typo;
   EXPECT_NE(typo.find("test.yaml"), std::string::npos) << typo;
   EXPECT_THROW(load("visual:\n  orb: {scale_factor: 0.9}\n"), Error);
+  EXPECT_THROW(load("visual:\n  orb: {candidate_factor: 0.5}\n"), Error);
   EXPECT_THROW(load("visual:\n  lines: {scale: 2.0}\n"), Error);
   EXPECT_THROW(load("visual:\n  bundle_adjustment: {window_size: 1}\n"), Error);
   EXPECT_THROW(load("visual:\n  pose: {rounds: 0}\n"), Error);

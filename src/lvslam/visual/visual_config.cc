@@ -22,12 +22,14 @@ void rejectUnknownKeys(const YamlConfig& node, std::initializer_list<const char*
 
 void loadFeatures(const YamlConfig& n, FeatureExtractorConfig& c) {
   if (const auto orb = n.find("orb")) {
-    rejectUnknownKeys(*orb, {"max_features", "scale_factor", "num_levels", "fast_threshold", "grid_cell_size"});
+    rejectUnknownKeys(*orb, {"max_features", "scale_factor", "num_levels", "fast_threshold", "grid_cell_size",
+                             "candidate_factor"});
     c.orb.max_features = orb->getInt("max_features", c.orb.max_features);
     c.orb.scale_factor = orb->getDouble("scale_factor", c.orb.scale_factor);
     c.orb.num_levels = orb->getInt("num_levels", c.orb.num_levels);
     c.orb.fast_threshold = orb->getInt("fast_threshold", c.orb.fast_threshold);
     c.orb.grid_cell_size = orb->getInt("grid_cell_size", c.orb.grid_cell_size);
+    c.orb.candidate_factor = orb->getDouble("candidate_factor", c.orb.candidate_factor);
   }
   if (const auto lines = n.find("lines")) {
     rejectUnknownKeys(*lines, {"enabled", "scale", "density_threshold", "min_length_ratio", "max_lines",
