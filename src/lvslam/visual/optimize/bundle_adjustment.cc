@@ -291,87 +291,119 @@ class LocalBundleAdjustment {
   // point behind its camera): Ceres rejects such a step too.
   std::optional<double> evaluate(const Estimate& x, SchurSystem* system) const {
     if (system) system->setZero();
-    double cost = 0.0;
-    const auto robust = [&cost](double s, double delta) {
-      cost += 0.5 * huberCost(s, delta);
-      return huberWeight(s, delta);
-    };
-    for (size_t i = 0; i < point_active_.size(); ++i) {
-      if (!point_active_[i]) continue;
-      const BaPointObservation& o = p_.point_observations[i];
-      const Eigen::Isometry3d& T = x.poses[o.keyframe];
-      const int a = system ? pose_var_[o.keyframe] : -1, j = system ? point_var_[o.point] : -1;
-      SchurLandmark<3>* point = j >= 0 ? &system->point(j) : nullptr;
-      Eigen::Vector2d r;
-      Eigen::Matrix<double, 2, 6> J_pose;
-      Eigen::Matrix<double, 2, 3> J_point;
-      if (!PointReprojection::evaluate(T.linear(), T.translation(), x.points[o.point], o.pixel, p_.intrinsics,
-                                       std::sqrt(o.inv_sigma2), r, a >= 0 ? &J_pose : nullptr,
-                                       point ? &J_point : nullptr))
-        return std::nullopt;
-      const double w = robust(r.squaredNorm(), config_.huber_delta);
-      if (system) accumulate<2, 3>(*system, a, point, point_slot_[i], w, r, J_pose, J_point);
-      if (!depth_active_[i]) continue;
-      Eigen::Matrix<double, 1, 1> e;
-      Eigen::Matrix<double, 1, 6> Jd_pose;
-      Eigen::Matrix<double, 1, 3> Jd_point;
-      if (!PointDepth::evaluate(T.linear(), T.translation(), x.points[o.point], o.depth, depthInvSigma(o), e[0],
-                                a >= 0 ? &Jd_pose : nullptr, point ? &Jd_point : nullptr))
-        return std::nullopt;
-      const double wd = robust(e[0] * e[0], config_.depth_huber_delta);
-      if (system) accumulate<1, 3>(*system, a, point, point_slot_[i], wd, e, Jd_pose, Jd_point);
-    }
+    Linearization lin{system};
     std::vector<Eigen::Matrix<double, 6, 4>> plus_jacobians;
     if (system) {
       plus_jacobians.resize(x.lines.size());
       for (size_t j = 0; j < x.lines.size(); ++j)
         if (line_var_[j] >= 0) plus_jacobians[j] = orthonormalPlusJacobian(orthonormalOf(x.lines[j]));
     }
+    if (!addPoints(x, lin) || !addLines(x, plus_jacobians, lin) || !addDirections(x, plus_jacobians, lin))
+      return std::nullopt;
+    addPriors(x, lin);
+    return lin.cost;
+  }
+
+  // The robust cost of one evaluation and, with a system, its normal equations.
+  struct Linearization {
+    SchurSystem* system = nullptr;
+    double cost = 0.0;
+    // Adds 1/2 rho(s) to the cost; returns the IRLS weight rho'(s).
+    double robust(double s, double delta) {
+      cost += 0.5 * huberCost(s, delta);
+      return huberWeight(s, delta);
+    }
+  };
+
+  // Reprojections and their LiDAR depths.
+  bool addPoints(const Estimate& x, Linearization& lin) const {
+    for (size_t i = 0; i < point_active_.size(); ++i) {
+      if (!point_active_[i]) continue;
+      const BaPointObservation& o = p_.point_observations[i];
+      const Eigen::Isometry3d& T = x.poses[o.keyframe];
+      const int a = lin.system ? pose_var_[o.keyframe] : -1, j = lin.system ? point_var_[o.point] : -1;
+      SchurLandmark<3>* point = j >= 0 ? &lin.system->point(j) : nullptr;
+      Eigen::Vector2d r;
+      Eigen::Matrix<double, 2, 6> J_pose;
+      Eigen::Matrix<double, 2, 3> J_point;
+      if (!PointReprojection::evaluate(T.linear(), T.translation(), x.points[o.point], o.pixel, p_.intrinsics,
+                                       std::sqrt(o.inv_sigma2), r, a >= 0 ? &J_pose : nullptr,
+                                       point ? &J_point : nullptr))
+        return false;
+      const double w = lin.robust(r.squaredNorm(), config_.huber_delta);
+      if (lin.system) accumulate<2, 3>(*lin.system, a, point, point_slot_[i], w, r, J_pose, J_point);
+      if (!depth_active_[i]) continue;
+      Eigen::Matrix<double, 1, 1> e;
+      Eigen::Matrix<double, 1, 6> Jd_pose;
+      Eigen::Matrix<double, 1, 3> Jd_point;
+      if (!PointDepth::evaluate(T.linear(), T.translation(), x.points[o.point], o.depth, depthInvSigma(o), e[0],
+                                a >= 0 ? &Jd_pose : nullptr, point ? &Jd_point : nullptr))
+        return false;
+      const double wd = lin.robust(e[0] * e[0], config_.depth_huber_delta);
+      if (lin.system) accumulate<1, 3>(*lin.system, a, point, point_slot_[i], wd, e, Jd_pose, Jd_point);
+    }
+    return true;
+  }
+
+  // Endpoint distances e_dis; the line's 6x4 plus Jacobian turns d/d(m, d)
+  // into d/d(orthonormal update).
+  bool addLines(const Estimate& x, const std::vector<Eigen::Matrix<double, 6, 4>>& plus_jacobians,
+                Linearization& lin) const {
     for (size_t i = 0; i < line_active_.size(); ++i) {
       if (!line_active_[i]) continue;
       const BaLineObservation& o = p_.line_observations[i];
       const Eigen::Isometry3d& T = x.poses[o.keyframe];
-      const int a = system ? pose_var_[o.keyframe] : -1, j = system ? line_var_[o.line] : -1;
-      SchurLandmark<4>* line = j >= 0 ? &system->line(j) : nullptr;
+      const int a = lin.system ? pose_var_[o.keyframe] : -1, j = lin.system ? line_var_[o.line] : -1;
+      SchurLandmark<4>* line = j >= 0 ? &lin.system->line(j) : nullptr;
       Eigen::Vector2d r;
       Eigen::Matrix<double, 2, 6> J_pose, J_plucker;
       if (!LineReprojection::evaluate(T.linear(), T.translation(), x.lines[o.line], homogeneous(o.start),
                                       homogeneous(o.end), K_line_, std::sqrt(o.inv_sigma2), r,
                                       a >= 0 ? &J_pose : nullptr, line ? &J_plucker : nullptr))
-        return std::nullopt;
-      const double w = robust(r.squaredNorm(), config_.huber_delta);
-      if (!system) continue;
+        return false;
+      const double w = lin.robust(r.squaredNorm(), config_.huber_delta);
+      if (!lin.system) continue;
       const Eigen::Matrix<double, 2, 4> J_line = line ? Eigen::Matrix<double, 2, 4>(J_plucker * plus_jacobians[o.line])
                                                       : Eigen::Matrix<double, 2, 4>::Zero();
-      accumulate<2, 4>(*system, a, line, line_slot_[i], w, r, J_pose, J_line);
+      accumulate<2, 4>(*lin.system, a, line, line_slot_[i], w, r, J_pose, J_line);
     }
+    return true;
+  }
+
+  // The paper's line direction residual e_dir against the fusion direction.
+  bool addDirections(const Estimate& x, const std::vector<Eigen::Matrix<double, 6, 4>>& plus_jacobians,
+                     Linearization& lin) const {
     for (size_t j = 0; j < direction_active_.size(); ++j) {
       if (!direction_active_[j]) continue;
-      const int v = system ? line_var_[j] : -1;
+      const int v = lin.system ? line_var_[j] : -1;
       Eigen::Matrix<double, 1, 1> e;
       Eigen::Matrix<double, 1, 3> J_d;
       if (!LineDirection::evaluate(x.lines[j].tail<3>(), fusion_unit_[j], config_.direction_weight, e[0],
                                    v >= 0 ? &J_d : nullptr))
-        return std::nullopt;
-      const double w = robust(e[0] * e[0], config_.direction_huber_delta);
+        return false;
+      const double w = lin.robust(e[0] * e[0], config_.direction_huber_delta);
       if (v < 0) continue;
       // Only d enters: the last three rows of the plus Jacobian.
       const Eigen::Matrix<double, 1, 4> J_line = J_d * plus_jacobians[j].bottomRows<3>();
-      accumulate<1, 4>(*system, -1, &system->line(v), -1, w, e, Eigen::Matrix<double, 1, 6>::Zero(), J_line);
+      accumulate<1, 4>(*lin.system, -1, &lin.system->line(v), -1, w, e, Eigen::Matrix<double, 1, 6>::Zero(), J_line);
     }
+    return true;
+  }
+
+  // LiDAR pose priors (always evaluable).
+  void addPriors(const Estimate& x, Linearization& lin) const {
     const double inv_sigma_t = 1.0 / config_.prior_sigma_m;
     const double inv_sigma_r = 1.0 / (config_.prior_sigma_deg * M_PI / 180.0);
     for (size_t k = 0; k < prior_active_.size(); ++k) {
       if (!prior_active_[k]) continue;
-      const int a = system ? pose_var_[k] : -1;
+      const int a = lin.system ? pose_var_[k] : -1;
       Eigen::Matrix<double, 6, 1> r;
       Eigen::Matrix<double, 6, 6> J;
       PosePrior::evaluate(x.poses[k], *p_.keyframes[k].prior_T_camera_world, inv_sigma_t, inv_sigma_r, r,
                           a >= 0 ? &J : nullptr);
-      const double w = robust(r.squaredNorm(), config_.prior_huber_delta);
-      if (a >= 0) accumulate<6, 3>(*system, a, nullptr, -1, w, r, J, Eigen::Matrix<double, 6, 3>::Zero());
+      const double w = lin.robust(r.squaredNorm(), config_.prior_huber_delta);
+      if (a >= 0) accumulate<6, 3>(*lin.system, a, nullptr, -1, w, r, J, Eigen::Matrix<double, 6, 3>::Zero());
     }
-    return cost;
   }
 
   Estimate plus(const Estimate& x, const SchurSystem::Step& step) const {
