@@ -7,16 +7,18 @@
 
 #include "lvslam/core/se3.h"
 #include "lvslam/visual/geometry/line_projection.h"
-#include "lvslam/visual/residuals/line_direction.h"
-#include "lvslam/visual/residuals/line_reprojection.h"
-#include "lvslam/visual/residuals/orthonormal_line_manifold.h"
-#include "lvslam/visual/residuals/point_depth.h"
-#include "lvslam/visual/residuals/point_reprojection.h"
-#include "lvslam/visual/residuals/pose_prior.h"
-#include "lvslam/visual/residuals/se3_manifold.h"
+#include "visual/residual_costs.h"
 
 namespace lvslam::visual {
 namespace {
+
+using testing::LineDirectionCost;
+using testing::LineReprojectionCost;
+using testing::OrthonormalLineManifold;
+using testing::PointDepthCost;
+using testing::PointReprojectionCost;
+using testing::PosePriorCost;
+using testing::Se3LeftManifold;
 
 const PinholeIntrinsics kK{450.0, 460.0, 320.0, 240.0};
 

@@ -11,8 +11,6 @@
 // sign of cos; at exactly 90 degrees it picks +.
 #include <cmath>
 
-#include <ceres/sized_cost_function.h>
-
 #include <Eigen/Core>
 
 #include "lvslam/visual/residuals/pose_block.h"
@@ -34,33 +32,6 @@ struct LineDirection {
     }
     return true;
   }
-};
-
-// Block: line (m, d) (OrthonormalLineManifold); only d enters.
-class LineDirectionCost final : public ceres::SizedCostFunction<1, kLineBlockSize> {
- public:
-  // fusion_direction need not be unit; it must not be zero.
-  LineDirectionCost(const Eigen::Vector3d& fusion_direction, double weight)
-      : fusion_unit_(fusion_direction.normalized()), weight_(weight) {}
-
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const Eigen::Vector3d d = Eigen::Map<const Eigen::Vector3d>(parameters[0] + 3);
-    Eigen::Matrix<double, 1, 3> J_d;
-    const bool want = jacobians && jacobians[0];
-    if (!LineDirection::evaluate(d, fusion_unit_, weight_, residuals[0], want ? &J_d : nullptr)) {
-      return false;
-    }
-    if (want) {
-      Eigen::Map<Eigen::Matrix<double, 1, 6>> J(jacobians[0]);
-      J.leftCols<3>().setZero();
-      J.rightCols<3>() = J_d;
-    }
-    return true;
-  }
-
- private:
-  Eigen::Vector3d fusion_unit_;
-  double weight_;
 };
 
 }  // namespace lvslam::visual

@@ -3,7 +3,6 @@
 //   e_dis = [x_s^T l' / sqrt(l1^2 + l2^2), x_e^T l' / sqrt(l1^2 + l2^2)]^T,
 // l' = K_line m_c the projected world line, x_s, x_e the observed endpoints.
 // Analytic Jacobians for the left SE3 pose update and the Plücker line.
-#include <ceres/sized_cost_function.h>
 
 #include <Eigen/Core>
 
@@ -47,39 +46,6 @@ struct LineReprojection {
     }
     return true;
   }
-};
-
-// Blocks: pose [t, q] (Se3LeftManifold convention), line (m, d) (OrthonormalLineManifold).
-class LineReprojectionCost final
-    : public ceres::SizedCostFunction<2, kPoseBlockSize, kLineBlockSize> {
- public:
-  LineReprojectionCost(const Eigen::Vector2d& start, const Eigen::Vector2d& end,
-                       const Eigen::Matrix3d& K_line, double sqrt_info)
-      : start_h_(start.x(), start.y(), 1.0), end_h_(end.x(), end.y(), 1.0), K_line_(K_line),
-        sqrt_info_(sqrt_info) {}
-
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const Eigen::Isometry3d T = fromPoseBlock(parameters[0]);
-    const Vector6d L_w = Eigen::Map<const Vector6d>(parameters[1]);
-    Eigen::Vector2d r;
-    Eigen::Matrix<double, 2, 6> J_pose, J_line;
-    const bool want_pose = jacobians && jacobians[0];
-    const bool want_line = jacobians && jacobians[1];
-    if (!LineReprojection::evaluate(T.linear(), T.translation(), L_w, start_h_, end_h_, K_line_,
-                                    sqrt_info_, r, want_pose ? &J_pose : nullptr,
-                                    want_line ? &J_line : nullptr)) {
-      return false;
-    }
-    Eigen::Map<Eigen::Vector2d>{residuals} = r;
-    if (want_pose) writePoseJacobian(J_pose, jacobians[0]);
-    if (want_line) Eigen::Map<Eigen::Matrix<double, 2, 6, Eigen::RowMajor>>{jacobians[1]} = J_line;
-    return true;
-  }
-
- private:
-  Eigen::Vector3d start_h_, end_h_;
-  Eigen::Matrix3d K_line_;
-  double sqrt_info_;
 };
 
 }  // namespace lvslam::visual

@@ -4,7 +4,6 @@
 // 2018; ORB-SLAM2's RGB-D depth term): e = (z_c(T_cw p_w) - z_lidar) / sigma,
 // with analytic Jacobians for the left SE3 pose update and the world point.
 // It ties the monocular map to the metric LiDAR scale.
-#include <ceres/sized_cost_function.h>
 
 #include <Eigen/Core>
 
@@ -28,42 +27,6 @@ struct PointDepth {
     if (J_point) *J_point = inv_sigma * R_cw.row(2);
     return true;
   }
-};
-
-// Blocks: pose [t, q] (Se3LeftManifold convention), point p_w (3). Two rows,
-// the second always 0: with every point row 2 high, Ceres' Schur elimination
-// uses its fixed-size <2, 3, 6> kernels instead of the dynamic ones.
-class PointDepthCost final : public ceres::SizedCostFunction<2, kPoseBlockSize, 3> {
- public:
-  PointDepthCost(double depth, double inv_sigma) : depth_(depth), inv_sigma_(inv_sigma) {}
-
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const Eigen::Isometry3d T = fromPoseBlock(parameters[0]);
-    const Eigen::Vector3d p_w = Eigen::Map<const Eigen::Vector3d>(parameters[1]);
-    Eigen::Matrix<double, 1, 6> J_pose;
-    Eigen::Matrix<double, 1, 3> J_point;
-    const bool want_pose = jacobians && jacobians[0];
-    const bool want_point = jacobians && jacobians[1];
-    if (!PointDepth::evaluate(T.linear(), T.translation(), p_w, depth_, inv_sigma_, residuals[0],
-                              want_pose ? &J_pose : nullptr, want_point ? &J_point : nullptr)) {
-      return false;
-    }
-    residuals[1] = 0.0;
-    if (want_pose) {
-      Eigen::Matrix<double, 2, 6> J = Eigen::Matrix<double, 2, 6>::Zero();
-      J.row(0) = J_pose;
-      writePoseJacobian(J, jacobians[0]);
-    }
-    if (want_point) {
-      Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>> J{jacobians[1]};
-      J.row(0) = J_point;
-      J.row(1).setZero();
-    }
-    return true;
-  }
-
- private:
-  double depth_, inv_sigma_;
 };
 
 }  // namespace lvslam::visual

@@ -2,7 +2,6 @@
 // Point reprojection residual e = sqrt_info (pi(K, T_cw p_w) - x) (ORB-SLAM /
 // Structure PLP point edge), with analytic Jacobians for the left SE3 pose
 // update and the world point.
-#include <ceres/sized_cost_function.h>
 
 #include <Eigen/Core>
 
@@ -34,36 +33,6 @@ struct PointReprojection {
     if (J_point) *J_point = J_proj * R_cw;
     return true;
   }
-};
-
-// Blocks: pose [t, q] (Se3LeftManifold convention), point p_w (3).
-class PointReprojectionCost final : public ceres::SizedCostFunction<2, kPoseBlockSize, 3> {
- public:
-  PointReprojectionCost(const Eigen::Vector2d& observed, const PinholeIntrinsics& K, double sqrt_info)
-      : observed_(observed), K_(K), sqrt_info_(sqrt_info) {}
-
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const Eigen::Isometry3d T = fromPoseBlock(parameters[0]);
-    const Eigen::Vector3d p_w = Eigen::Map<const Eigen::Vector3d>(parameters[1]);
-    Eigen::Vector2d r;
-    Eigen::Matrix<double, 2, 6> J_pose;
-    Eigen::Matrix<double, 2, 3> J_point;
-    const bool want_pose = jacobians && jacobians[0];
-    const bool want_point = jacobians && jacobians[1];
-    if (!PointReprojection::evaluate(T.linear(), T.translation(), p_w, observed_, K_, sqrt_info_, r,
-                                     want_pose ? &J_pose : nullptr, want_point ? &J_point : nullptr)) {
-      return false;
-    }
-    Eigen::Map<Eigen::Vector2d>{residuals} = r;
-    if (want_pose) writePoseJacobian(J_pose, jacobians[0]);
-    if (want_point) Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>>{jacobians[1]} = J_point;
-    return true;
-  }
-
- private:
-  Eigen::Vector2d observed_;
-  PinholeIntrinsics K_;
-  double sqrt_info_;
 };
 
 }  // namespace lvslam::visual

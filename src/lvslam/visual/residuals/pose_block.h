@@ -35,14 +35,4 @@ inline Eigen::Isometry3d fromPoseBlock(const double* block) {
   return T;
 }
 
-// Writes d(residual)/d(delta) of a left SE3 update into the first 6 of the 7
-// columns of a pose block's Jacobian (the 7th is zero: Se3LeftManifold's
-// PlusJacobian is [I6; 0]).
-template <int Rows>
-inline void writePoseJacobian(const Eigen::Matrix<double, Rows, kPoseTangentSize>& J_tangent, double* out) {
-  Eigen::Map<Eigen::Matrix<double, Rows, kPoseBlockSize, Eigen::RowMajor>> J(out);
-  J.template leftCols<kPoseTangentSize>() = J_tangent;
-  J.col(kPoseTangentSize).setZero();
-}
-
 }  // namespace lvslam::visual

@@ -7,7 +7,6 @@
 // the camera centre in the world and the rotation error in the camera frame,
 // with analytic Jacobians for the left update T <- exp(delta) T:
 //   dc/drho = -R^T, dc/dphi = 0, dlog/dphi = J_l^-1(log(R R_p^T)).
-#include <ceres/sized_cost_function.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -34,27 +33,6 @@ struct PosePrior {
       J_pose->bottomRightCorner<3, 3>() = inv_sigma_r * leftJacobianSO3Inverse(r_rot);
     }
   }
-};
-
-// Block: pose [t, q] (Se3LeftManifold convention).
-class PosePriorCost final : public ceres::SizedCostFunction<6, kPoseBlockSize> {
- public:
-  PosePriorCost(const Eigen::Isometry3d& prior_T_camera_world, double sigma_t, double sigma_r)
-      : prior_(prior_T_camera_world), inv_sigma_t_(1.0 / sigma_t), inv_sigma_r_(1.0 / sigma_r) {}
-
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    Eigen::Matrix<double, 6, 1> r;
-    Eigen::Matrix<double, 6, 6> J;
-    const bool want = jacobians && jacobians[0];
-    PosePrior::evaluate(fromPoseBlock(parameters[0]), prior_, inv_sigma_t_, inv_sigma_r_, r, want ? &J : nullptr);
-    Eigen::Map<Eigen::Matrix<double, 6, 1>>{residuals} = r;
-    if (want) writePoseJacobian<6>(J, jacobians[0]);
-    return true;
-  }
-
- private:
-  Eigen::Isometry3d prior_;
-  double inv_sigma_t_, inv_sigma_r_;
 };
 
 }  // namespace lvslam::visual
