@@ -102,5 +102,18 @@ TEST(Se3, RotationAngleIsPreciseForTinyAngles) {
   EXPECT_NEAR(rotationAngle(T), 1e-7, 1e-13);
 }
 
+// The left update is exp(delta) T, and it takes a rotation that has drifted
+// off SO(3) (a long chain of products) back onto it.
+TEST(Se3, LeftUpdateIsExpTimesTAndKeepsTheRotationOrthonormal) {
+  const Eigen::Isometry3d T = expSE3(twist(0.3, -0.2, 0.5, 0.1, 0.4, -0.3));
+  const Vector6d delta = twist(0.01, 0.02, -0.03, 0.002, -0.001, 0.003);
+  EXPECT_TRUE(leftUpdate(delta, T).isApprox(expSE3(delta) * T, 1e-12));
+  Eigen::Isometry3d drifted = T;
+  drifted.linear() *= 1.0 + 1e-6;
+  const Eigen::Matrix3d R = leftUpdate(Vector6d::Zero(), drifted).linear();
+  EXPECT_LT((R * R.transpose() - Eigen::Matrix3d::Identity()).norm(), 1e-14);
+  EXPECT_LT((R - T.linear()).norm(), 1e-6);  // back within the size of the drift
+}
+
 }  // namespace
 }  // namespace lvslam

@@ -126,6 +126,12 @@ double rotationAngle(const Eigen::Isometry3d& T) {
   return std::acos(c);
 }
 
+Eigen::Isometry3d leftUpdate(const Vector6d& delta, const Eigen::Isometry3d& T) {
+  Eigen::Isometry3d out = expSE3(delta) * T;
+  out.linear() = Eigen::Quaterniond(out.linear()).normalized().toRotationMatrix();
+  return out;
+}
+
 Eigen::Isometry3d boundedStep(const Eigen::Isometry3d& T_from, const Eigen::Isometry3d& T_to, double max_m,
                               double max_rad) {
   const Vector6d xi = logSE3(T_from.inverse() * T_to);

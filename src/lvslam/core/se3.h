@@ -44,6 +44,10 @@ Eigen::Isometry3d interpolate(const Eigen::Isometry3d& T_a, const Eigen::Isometr
 Eigen::Isometry3d interpolateAtTime(double t, double t0, const Eigen::Isometry3d& T0, double t1,
                                     const Eigen::Isometry3d& T1);
 
+// exp(delta) T, the rotation re-normalised so that repeated updates stay on
+// SE(3) (the left update of the visual optimisers and the pose fusion).
+Eigen::Isometry3d leftUpdate(const Vector6d& delta, const Eigen::Isometry3d& T);
+
 // Rotation angle of a pose in radians, in [0, pi].
 double rotationAngle(const Eigen::Isometry3d& T);
 

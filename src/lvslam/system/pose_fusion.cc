@@ -18,9 +18,7 @@ Eigen::Isometry3d fusePoses(const Eigen::Isometry3d& T_camera_world_a, const Mat
   if (sum.info() != Eigen::Success || !sum.isPositive()) return T_camera_world_a;
   const Vector6d delta = sum.solve(information_b * delta_b);
   if (!delta.allFinite()) return T_camera_world_a;
-  Eigen::Isometry3d T = expSE3(delta) * T_camera_world_a;
-  T.linear() = Eigen::Quaterniond(T.linear()).normalized().toRotationMatrix();
-  return T;
+  return leftUpdate(delta, T_camera_world_a);
 }
 
 }  // namespace lvslam::system

@@ -11,6 +11,7 @@
 #include "lvslam/core/se3.h"
 #include "lvslam/visual/geometry/line_projection.h"
 #include "lvslam/visual/geometry/orthonormal_line.h"
+#include "lvslam/visual/optimize/huber_loss.h"
 #include "lvslam/visual/optimize/schur_system.h"
 #include "lvslam/visual/residuals/line_direction.h"
 #include "lvslam/visual/residuals/line_reprojection.h"
@@ -69,21 +70,12 @@ void validate(const BundleAdjustmentConfig& c) {
     throw Error(kWhere, "prior_sigma_m, prior_sigma_deg and prior_huber_delta must be positive");
 }
 
-double huberCost(double s, double delta) { return s <= delta * delta ? s : 2.0 * delta * std::sqrt(s) - delta * delta; }
-double huberWeight(double s, double delta) { return s <= delta * delta ? 1.0 : delta / std::sqrt(s); }
-
 // The value of every block; variables change, constants stay.
 struct Estimate {
   std::vector<Eigen::Isometry3d> poses;
   std::vector<Eigen::Vector3d> points;
   std::vector<Vector6d> lines;  // unit Plücker (m, d)
 };
-
-Eigen::Isometry3d leftUpdate(const Eigen::Matrix<double, 6, 1>& delta, const Eigen::Isometry3d& T) {
-  Eigen::Isometry3d out = expSE3(delta) * T;
-  out.linear() = Eigen::Quaterniond(out.linear()).normalized().toRotationMatrix();  // no drift off SO(3)
-  return out;
-}
 
 OrthonormalLine orthonormalOf(const Vector6d& L) { return OrthonormalLine::fromPlucker(PluckerLine::fromVector(L)); }
 
@@ -122,8 +114,7 @@ class LocalBundleAdjustment {
         point_active_(p.point_observations.size(), false), depth_active_(p.point_observations.size(), false),
         line_active_(p.line_observations.size(), false), direction_active_(p.lines.size(), false),
         prior_active_(p.keyframes.size(), false) {
-    chooseResiduals();
-    numberVariables();
+    numberVariables(chooseResiduals());
   }
 
   bool empty() const {
@@ -225,11 +216,15 @@ class LocalBundleAdjustment {
   // The residuals that exist from the start: reprojections in front of their
   // camera (the rest are outliers from the start), depths of those, lines,
   // directions of used lines, priors of free poses the images constrain (a
-  // prior alone would just copy the LiDAR).
-  void chooseResiduals() {
-    pose_used_.assign(p_.keyframes.size(), false);
-    point_used_.assign(p_.points.size(), false);
-    line_used_.assign(p_.lines.size(), false);
+  // prior alone would just copy the LiDAR). Returns the blocks some image
+  // residual touches: the candidates for unknowns.
+  struct Used {
+    std::vector<bool> poses, points, lines;
+  };
+
+  Used chooseResiduals() {
+    Used used{std::vector<bool>(p_.keyframes.size(), false), std::vector<bool>(p_.points.size(), false),
+              std::vector<bool>(p_.lines.size(), false)};
     for (size_t i = 0; i < p_.point_observations.size(); ++i) {
       const BaPointObservation& o = p_.point_observations[i];
       const Eigen::Isometry3d& T = x_.poses[o.keyframe];
@@ -239,27 +234,28 @@ class LocalBundleAdjustment {
         continue;
       point_active_[i] = true;
       depth_active_[i] = std::isfinite(o.depth);
-      pose_used_[o.keyframe] = point_used_[o.point] = true;
+      used.poses[o.keyframe] = used.points[o.point] = true;
     }
     for (size_t i = 0; i < p_.line_observations.size(); ++i) {
       const BaLineObservation& o = p_.line_observations[i];
       if (!o.start.allFinite() || !o.end.allFinite()) continue;
       line_active_[i] = true;
-      pose_used_[o.keyframe] = line_used_[o.line] = true;
+      used.poses[o.keyframe] = used.lines[o.line] = true;
     }
     fusion_unit_.resize(p_.lines.size(), Eigen::Vector3d::Zero());
     for (size_t j = 0; j < p_.lines.size(); ++j) {
       const auto& d_fu = p_.lines[j].fusion_direction;
-      if (!config_.use_direction_residual || !line_used_[j] || !d_fu || !(d_fu->norm() > 0.0)) continue;
+      if (!config_.use_direction_residual || !used.lines[j] || !d_fu || !(d_fu->norm() > 0.0)) continue;
       direction_active_[j] = true;
       fusion_unit_[j] = d_fu->normalized();
     }
     for (size_t k = 0; k < p_.keyframes.size(); ++k)
-      prior_active_[k] = p_.keyframes[k].prior_T_camera_world && pose_used_[k] && !p_.keyframes[k].fixed;
+      prior_active_[k] = p_.keyframes[k].prior_T_camera_world && used.poses[k] && !p_.keyframes[k].fixed;
+    return used;
   }
 
   // Unknowns: used blocks not held fixed; -1 marks a constant.
-  void numberVariables() {
+  void numberVariables(const Used& used) {
     const auto number = [](const std::vector<bool>& used, auto fixed) {
       std::vector<int> index(used.size(), -1);
       int n = 0;
@@ -268,9 +264,9 @@ class LocalBundleAdjustment {
       return std::make_pair(index, n);
     };
     int poses = 0, points = 0, lines = 0;
-    std::tie(pose_var_, poses) = number(pose_used_, [&](size_t k) { return p_.keyframes[k].fixed; });
-    std::tie(point_var_, points) = number(point_used_, [&](size_t j) { return p_.points[j].fixed; });
-    std::tie(line_var_, lines) = number(line_used_, [&](size_t j) { return p_.lines[j].fixed; });
+    std::tie(pose_var_, poses) = number(used.poses, [&](size_t k) { return p_.keyframes[k].fixed; });
+    std::tie(point_var_, points) = number(used.points, [&](size_t j) { return p_.points[j].fixed; });
+    std::tie(line_var_, lines) = number(used.lines, [&](size_t j) { return p_.lines[j].fixed; });
     system_ = std::make_unique<SchurSystem>(poses, points, lines);
     point_slot_.assign(p_.point_observations.size(), -1);
     line_slot_.assign(p_.line_observations.size(), -1);
@@ -310,7 +306,7 @@ class LocalBundleAdjustment {
     double cost = 0.0;
     // Adds 1/2 rho(s) to the cost; returns the IRLS weight rho'(s).
     double robust(double s, double delta) {
-      cost += 0.5 * huberCost(s, delta);
+      cost += 0.5 * huberLoss(s, delta);
       return huberWeight(s, delta);
     }
   };
@@ -441,7 +437,6 @@ class LocalBundleAdjustment {
   Eigen::Matrix3d K_line_;
   Estimate x_;
   std::vector<bool> point_active_, depth_active_, line_active_, direction_active_, prior_active_;
-  std::vector<bool> pose_used_, point_used_, line_used_;
   std::vector<Eigen::Vector3d> fusion_unit_;
   std::vector<int> pose_var_, point_var_, line_var_;  // unknown index, -1: constant
   std::vector<int> point_slot_, line_slot_;            // coupling block of each observation

@@ -7,6 +7,7 @@
 
 #include "lvslam/core/se3.h"
 #include "lvslam/visual/geometry/line_projection.h"
+#include "lvslam/visual/optimize/huber_loss.h"
 #include "lvslam/visual/residuals/line_reprojection.h"
 #include "lvslam/visual/residuals/point_reprojection.h"
 
@@ -19,18 +20,6 @@ struct NormalEquations {
   Vector6d g = Vector6d::Zero();
   double cost = 0.0;
 };
-
-// IRLS weight of the Huber loss on a whitened residual of squared norm chi2.
-double huberWeight(double chi2, double delta, bool robust) {
-  if (!robust) return 1.0;
-  const double r = std::sqrt(chi2);
-  return r <= delta ? 1.0 : delta / r;
-}
-
-double huberCost(double chi2, double delta, bool robust) {
-  if (!robust || chi2 <= delta * delta) return chi2;
-  return 2.0 * delta * std::sqrt(chi2) - delta * delta;
-}
 
 class PoseProblem {
  public:
@@ -101,9 +90,9 @@ class PoseProblem {
   void add(const Eigen::Vector2d& r, const Eigen::Matrix<double, 2, 6>& J, bool jacobians, bool robust,
            NormalEquations& ne) const {
     const double e2 = r.squaredNorm();
-    ne.cost += huberCost(e2, config_.huber_delta, robust);
+    ne.cost += robust ? huberLoss(e2, config_.huber_delta) : e2;
     if (!jacobians) return;
-    const double w = huberWeight(e2, config_.huber_delta, robust);
+    const double w = robust ? huberWeight(e2, config_.huber_delta) : 1.0;
     ne.H.noalias() += w * J.transpose() * J;
     ne.g.noalias() += w * J.transpose() * r;
   }

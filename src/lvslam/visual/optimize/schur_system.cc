@@ -87,7 +87,7 @@ double maxLandmarkGradient(const std::vector<SchurLandmark<D>>& landmarks) {
 }  // namespace
 
 SchurSystem::SchurSystem(int free_poses, int points, int lines)
-    : free_poses_(free_poses), pose_H_(free_poses), pose_g_(free_poses), points_(points), lines_(lines) {
+    : pose_H_(free_poses), pose_g_(free_poses), points_(points), lines_(lines) {
   setZero();
 }
 
@@ -119,10 +119,11 @@ void SchurSystem::setZero() {
 }
 
 bool SchurSystem::solve(double mu, Step& step) const {
-  const int n = 6 * free_poses_;
+  const int free_poses = static_cast<int>(pose_H_.size());
+  const int n = 6 * free_poses;
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd b(n);
-  for (int a = 0; a < free_poses_; ++a) {
+  for (int a = 0; a < free_poses; ++a) {
     S.block<6, 6>(6 * a, 6 * a) = damped<6>(pose_H_[a], mu);
     b.segment<6>(6 * a) = -pose_g_[a];
   }
@@ -143,8 +144,8 @@ bool SchurSystem::solve(double mu, Step& step) const {
 
 double SchurSystem::modelDecrease(const Step& step) const {
   double sum = 0.0;
-  for (int a = 0; a < free_poses_; ++a) {
-    const Vector6 dx = step.poses.segment<6>(6 * a);
+  for (std::size_t a = 0; a < pose_H_.size(); ++a) {
+    const Vector6 dx = step.poses.segment<6>(6 * static_cast<Eigen::Index>(a));
     sum += pose_g_[a].dot(dx) + 0.5 * dx.dot(pose_H_[a] * dx);
   }
   sum += landmarkModel(points_, step.poses, step.points) + landmarkModel(lines_, step.poses, step.lines);

@@ -67,8 +67,7 @@ class SchurSystem {
   template <int D>
   static int slotOf(SchurLandmark<D>& landmark, int pose);
 
-  int free_poses_;
-  std::vector<Matrix6> pose_H_;
+  std::vector<Matrix6> pose_H_;  // one per free pose
   std::vector<Vector6> pose_g_;
   std::vector<SchurLandmark<3>> points_;
   std::vector<SchurLandmark<4>> lines_;
