@@ -2,14 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 
+#include <opencv2/imgproc.hpp>
+
 #include "lvslam/core/error.h"
+#include "lvslam/visual/feature/orb_corners.h"
 
 namespace lvslam::visual {
 
 namespace {
+constexpr int kPatchSize = 31;  // ORB's descriptor patch (Rublee et al. 2011)
+constexpr int kPatchRadius = kPatchSize / 2;
+
 void validate(const OrbExtractorConfig& c) {
   const std::string where = "OrbExtractorConfig";
   if (c.max_features <= 0 || c.max_features > 100000) throw Error(where, "max_features must be in [1, 100000]");
@@ -18,16 +23,65 @@ void validate(const OrbExtractorConfig& c) {
   if (c.fast_threshold < 1) throw Error(where, "fast_threshold must be >= 1");
   if (!(c.candidate_factor >= 1.0 && c.candidate_factor <= 100.0)) throw Error(where, "candidate_factor must be in [1, 100]");
   if (c.grid_cell_size < 4) throw Error(where, "grid_cell_size must be >= 4");
-  if (c.edge_threshold < 3) throw Error(where, "edge_threshold must be >= 3");
+  // The orientation disc must fit inside the image around every corner.
+  if (c.edge_threshold < kPatchRadius) {
+    throw Error(where, "edge_threshold must be >= " + std::to_string(kPatchRadius));
+  }
+}
+
+// Each level's share of the candidates, proportional to its linear size as in
+// cv::ORB and ORB-SLAM (a geometric series in 1 / scale_factor); the last level
+// takes what is left.
+std::vector<int> candidatesPerLevel(int total, double scale_factor, int levels) {
+  std::vector<int> share(levels, 0);
+  const double q = 1.0 / scale_factor;
+  double next = total * (1.0 - q) / (1.0 - std::pow(q, levels));
+  int used = 0;
+  for (int level = 0; level + 1 < levels; ++level, next *= q) {
+    share[level] = static_cast<int>(std::lround(next));
+    used += share[level];
+  }
+  share[levels - 1] = std::max(total - used, 0);
+  return share;
+}
+
+// The level's FAST corners at least `border` pixels inside, the strongest
+// `budget` by Harris (cut to twice that by FAST score first, as cv::ORB does),
+// in level-0 pixels; `at_level` keeps their pixels in the level image.
+void detectOnLevel(const cv::Mat& level_image, int level, float scale, int budget, const OrbExtractorConfig& c,
+                   std::vector<cv::KeyPoint>& candidates, std::vector<cv::Point>& at_level) {
+  std::vector<cv::KeyPoint> corners;
+  cv::FAST(level_image, corners, c.fast_threshold, true, cv::FastFeatureDetector::TYPE_9_16);
+  const int border = c.edge_threshold;
+  std::erase_if(corners, [&](const cv::KeyPoint& kp) {
+    const int x = cvRound(kp.pt.x), y = cvRound(kp.pt.y);
+    return x < border || y < border || x >= level_image.cols - border || y >= level_image.rows - border;
+  });
+  cv::KeyPointsFilter::retainBest(corners, 2 * budget);
+  for (cv::KeyPoint& kp : corners) kp.response = harrisResponse(level_image, cvRound(kp.pt.x), cvRound(kp.pt.y));
+  cv::KeyPointsFilter::retainBest(corners, budget);
+  for (const cv::KeyPoint& kp : corners) {
+    const int x = cvRound(kp.pt.x), y = cvRound(kp.pt.y);
+    candidates.emplace_back(kp.pt * scale, static_cast<float>(kPatchSize) * scale, -1.0f, kp.response, level);
+    at_level.emplace_back(x, y);
+  }
 }
 }  // namespace
 
 OrbExtractor::OrbExtractor(const OrbExtractorConfig& config) : config_(config) {
   validate(config_);
-  const int candidates = static_cast<int>(std::ceil(config_.max_features * config_.candidate_factor));
-  orb_ = cv::ORB::create(candidates, static_cast<float>(config_.scale_factor), config_.num_levels,
-                         config_.edge_threshold, 0, 2, cv::ORB::HARRIS_SCORE, 31,
+  // Used only to describe the chosen keypoints; its detector settings are unused.
+  orb_ = cv::ORB::create(config_.max_features, static_cast<float>(config_.scale_factor), config_.num_levels,
+                         config_.edge_threshold, 0, 2, cv::ORB::HARRIS_SCORE, kPatchSize,
                          config_.fast_threshold);
+  const int total = static_cast<int>(std::ceil(config_.max_features * config_.candidate_factor));
+  budget_ = candidatesPerLevel(total, config_.scale_factor, config_.num_levels);
+  // cv::ORB's level scales (float, from its float factor): the keypoints land
+  // on the pixels it describes.
+  const double factor = static_cast<float>(config_.scale_factor);
+  for (int level = 0; level < config_.num_levels; ++level) {
+    level_scale_.push_back(static_cast<float>(std::pow(factor, level)));
+  }
   double s = 1.0;
   for (int level = 0; level < config_.num_levels; ++level) {
     pyramid_.scale.push_back(s);
@@ -41,15 +95,33 @@ void OrbExtractor::extract(const cv::Mat& gray, std::vector<cv::KeyPoint>& keypo
   if (gray.empty() || gray.type() != CV_8UC1) {
     throw Error("OrbExtractor", "expects a non-empty 8-bit single-channel image");
   }
-  // Detect generously (cv::ORB keeps the globally strongest, which starves
-  // weak-texture cells), choose on the grid, then describe only the chosen.
+  // Detect generously on every level (the strongest only would starve
+  // weak-texture cells), choose on the grid, then orient and describe only
+  // the chosen.
+  std::vector<cv::Mat> levels(config_.num_levels);
   std::vector<cv::KeyPoint> candidates;
-  orb_->detect(gray, candidates);
+  std::vector<cv::Point> at_level;
+  for (int level = 0; level < config_.num_levels; ++level) {
+    const float s = level_scale_[level];
+    if (level == 0) {
+      levels[0] = gray;
+    } else {
+      const cv::Size size(cvRound(static_cast<float>(gray.cols) / s), cvRound(static_cast<float>(gray.rows) / s));
+      if (size.width <= 2 * config_.edge_threshold || size.height <= 2 * config_.edge_threshold) break;
+      cv::resize(levels[level - 1], levels[level], size, 0, 0, cv::INTER_LINEAR_EXACT);
+    }
+    detectOnLevel(levels[level], level, s, budget_[level], config_, candidates, at_level);
+  }
   const std::vector<int> keep = selectOnGrid(candidates, gray.cols, gray.rows,
                                              config_.grid_cell_size, config_.max_features);
   keypoints.clear();
   keypoints.reserve(keep.size());
-  for (const int i : keep) keypoints.push_back(candidates[i]);
+  for (const int i : keep) {
+    cv::KeyPoint kp = candidates[i];
+    kp.angle = intensityCentroidAngle(levels[kp.octave], at_level[i].x, at_level[i].y, kPatchRadius);
+    keypoints.push_back(kp);
+  }
+  // cv::ORB regroups the keypoints by level; descriptor rows follow the output order.
   orb_->compute(gray, keypoints, descriptors);
   if (descriptors.empty()) descriptors.create(0, 32, CV_8U);
 }
@@ -58,29 +130,28 @@ std::vector<int> selectOnGrid(const std::vector<cv::KeyPoint>& keypoints, int wi
                               int cell_size, int max_count) {
   const int cols = std::max(1, (width + cell_size - 1) / cell_size);
   const int rows = std::max(1, (height + cell_size - 1) / cell_size);
-  std::vector<int> cell(keypoints.size());
+  std::vector<std::vector<int>> cells(static_cast<size_t>(cols) * rows);
   for (size_t i = 0; i < keypoints.size(); ++i) {
     const int cx = std::clamp(static_cast<int>(keypoints[i].pt.x) / cell_size, 0, cols - 1);
     const int cy = std::clamp(static_cast<int>(keypoints[i].pt.y) / cell_size, 0, rows - 1);
-    cell[i] = cy * cols + cx;
+    cells[cy * cols + cx].push_back(static_cast<int>(i));
   }
-  std::vector<int> order(keypoints.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    if (cell[a] != cell[b]) return cell[a] < cell[b];
-    return keypoints[a].response > keypoints[b].response;
-  });
-  // Rank of each keypoint inside its cell; round r serves every cell's r-th best.
-  std::vector<int> rank(keypoints.size(), 0);
-  for (size_t k = 1; k < order.size(); ++k) {
-    if (cell[order[k]] == cell[order[k - 1]]) rank[order[k]] = rank[order[k - 1]] + 1;
+  const auto stronger = [&](int a, int b) { return keypoints[a].response > keypoints[b].response; };
+  for (std::vector<int>& cell : cells) std::stable_sort(cell.begin(), cell.end(), stronger);
+  // Round r serves every cell's r-th best, strongest first; ties keep cell order.
+  std::vector<int> chosen;
+  std::vector<int> round;
+  for (size_t r = 0; static_cast<int>(chosen.size()) < max_count; ++r) {
+    round.clear();
+    for (const std::vector<int>& cell : cells) {
+      if (r < cell.size()) round.push_back(cell[r]);
+    }
+    if (round.empty()) break;
+    std::stable_sort(round.begin(), round.end(), stronger);
+    const size_t room = static_cast<size_t>(max_count) - chosen.size();
+    chosen.insert(chosen.end(), round.begin(), round.begin() + std::min(room, round.size()));
   }
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    if (rank[a] != rank[b]) return rank[a] < rank[b];
-    return keypoints[a].response > keypoints[b].response;
-  });
-  if (static_cast<int>(order.size()) > max_count) order.resize(max_count);
-  return order;
+  return chosen;
 }
 
 }  // namespace lvslam::visual

@@ -22,7 +22,7 @@ struct OrbExtractorConfig {
   // Candidates detected before the grid selection, as a multiple of max_features.
   double candidate_factor = 10.0;
   int grid_cell_size = 40;  // pixels
-  int edge_threshold = 19;
+  int edge_threshold = 19;  // pixels of every level without corners (>= 15, ORB's patch radius)
 };
 
 class OrbExtractor {
@@ -38,8 +38,10 @@ class OrbExtractor {
 
  private:
   OrbExtractorConfig config_;
-  cv::Ptr<cv::ORB> orb_;
+  cv::Ptr<cv::ORB> orb_;  // describes the chosen keypoints
   ScalePyramid pyramid_;
+  std::vector<int> budget_;         // candidates per level
+  std::vector<float> level_scale_;  // as cv::ORB computes them
 };
 
 // Indices of at most max_count keypoints chosen round-robin over grid cells
