@@ -106,6 +106,37 @@ TEST(VisualMap, OdometryPosesBecomePriorsInTheMapFrame) {
   EXPECT_THROW(map.setOdometryPose(99, Eigen::Isometry3d::Identity()), Error);
 }
 
+// Landmarks are looked up by id through an index into the map's own nodes:
+// a copy must find its own landmarks, and a moved map keeps finding them.
+TEST(VisualMap, CopiesAndMovesLookUpTheirOwnLandmarks) {
+  VisualMap original;
+  const int kf = original.addKeyframe(keyframeWith(4, 2));
+  const int p = original.addPointLandmark(Eigen::Vector3d(1, 2, 3), cv::Mat());
+  const int l = original.addLineLandmark(PluckerLine::fromPoints(Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 1)),
+                                         Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 1), cv::Mat());
+  original.addPointObservation(p, kf, 0);
+
+  VisualMap copy = original;
+  copy.point(p).p_world.x() = 10.0;
+  copy.removeLine(l);
+  EXPECT_EQ(&copy.point(p), &copy.points().at(p));
+  EXPECT_EQ(&copy.line(l), &copy.lines().at(l));
+  EXPECT_DOUBLE_EQ(original.point(p).p_world.x(), 1.0);
+  EXPECT_FALSE(original.line(l).bad);
+  EXPECT_TRUE(copy.line(l).bad);
+
+  VisualMap assigned;
+  assigned = copy;
+  EXPECT_EQ(&assigned.point(p), &assigned.points().at(p));
+  EXPECT_DOUBLE_EQ(assigned.point(p).p_world.x(), 10.0);
+
+  const VisualMap moved = std::move(copy);
+  EXPECT_EQ(&moved.point(p), &moved.points().at(p));
+  EXPECT_DOUBLE_EQ(moved.point(p).p_world.x(), 10.0);
+  EXPECT_THROW(moved.point(p + 1), Error);
+  EXPECT_THROW(moved.line(-1), Error);
+}
+
 TEST(VisualMap, RejectsInconsistentObservations) {
   VisualMap map;
   const int kf = map.addKeyframe(keyframeWith(2, 0));

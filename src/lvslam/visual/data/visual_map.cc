@@ -18,7 +18,34 @@ auto& find(Map& items, int id, const char* what) {
   if (it == items.end()) throw Error("VisualMap", std::string("unknown ") + what + " id " + std::to_string(id));
   return it->second;
 }
+
+template <typename Landmark>
+Landmark& findById(const std::vector<Landmark*>& by_id, int id, const char* what) {
+  if (id < 0 || static_cast<size_t>(id) >= by_id.size() || by_id[static_cast<size_t>(id)] == nullptr) {
+    throw Error("VisualMap", std::string("unknown ") + what + " id " + std::to_string(id));
+  }
+  return *by_id[static_cast<size_t>(id)];
+}
+
+// Pointers to every landmark by id, into the map's nodes.
+template <typename Landmark>
+std::vector<Landmark*> indexById(std::map<int, Landmark>& landmarks, int next_id) {
+  std::vector<Landmark*> by_id(static_cast<size_t>(next_id), nullptr);
+  for (auto& [id, landmark] : landmarks) by_id[static_cast<size_t>(id)] = &landmark;
+  return by_id;
+}
 }  // namespace
+
+VisualMap::VisualMap(const VisualMap& other)
+    : keyframes_(other.keyframes_), points_(other.points_), lines_(other.lines_),
+      covisibility_(other.covisibility_), next_keyframe_id_(other.next_keyframe_id_),
+      next_point_id_(other.next_point_id_), next_line_id_(other.next_line_id_), T_world_odom_(other.T_world_odom_),
+      point_by_id_(indexById(points_, next_point_id_)), line_by_id_(indexById(lines_, next_line_id_)) {}
+
+VisualMap& VisualMap::operator=(const VisualMap& other) {
+  if (this != &other) *this = VisualMap(other);
+  return *this;
+}
 
 int VisualMap::addKeyframe(Keyframe keyframe) {
   keyframe.id = next_keyframe_id_++;
@@ -35,7 +62,7 @@ int VisualMap::addPointLandmark(const Eigen::Vector3d& p_world, const cv::Mat& d
   p.id = next_point_id_++;
   p.p_world = p_world;
   p.descriptor = descriptor.clone();
-  points_.emplace(p.id, std::move(p));
+  point_by_id_.push_back(&points_.emplace(p.id, std::move(p)).first->second);
   return next_point_id_ - 1;
 }
 
@@ -48,7 +75,7 @@ int VisualMap::addLineLandmark(const PluckerLine& line_world, const Eigen::Vecto
   l.start_world = start_world;
   l.end_world = end_world;
   l.descriptor = descriptor.clone();
-  lines_.emplace(l.id, std::move(l));
+  line_by_id_.push_back(&lines_.emplace(l.id, std::move(l)).first->second);
   return next_line_id_ - 1;
 }
 
@@ -86,39 +113,39 @@ void VisualMap::removeObservation(Landmark& landmark, std::vector<int> Keyframe:
 }
 
 void VisualMap::addPointObservation(int point, int keyframe, int index) {
-  addObservation(find(points_, point, "point"), &Keyframe::point_landmark, keyframe, index);
+  addObservation(findById(point_by_id_, point, "point"), &Keyframe::point_landmark, keyframe, index);
 }
 void VisualMap::addLineObservation(int line, int keyframe, int index) {
-  addObservation(find(lines_, line, "line"), &Keyframe::line_landmark, keyframe, index);
+  addObservation(findById(line_by_id_, line, "line"), &Keyframe::line_landmark, keyframe, index);
 }
 void VisualMap::removePointObservation(int point, int keyframe) {
-  removeObservation(find(points_, point, "point"), &Keyframe::point_landmark, keyframe);
+  removeObservation(findById(point_by_id_, point, "point"), &Keyframe::point_landmark, keyframe);
 }
 void VisualMap::removeLineObservation(int line, int keyframe) {
-  removeObservation(find(lines_, line, "line"), &Keyframe::line_landmark, keyframe);
+  removeObservation(findById(line_by_id_, line, "line"), &Keyframe::line_landmark, keyframe);
 }
 
 void VisualMap::replacePoint(int from, int into) {
   if (from == into) return;
-  const std::vector<Observation> observations = find(points_, from, "point").observations;
-  const PointLandmark& target = find(points_, into, "point");
+  const std::vector<Observation> observations = findById(point_by_id_, from, "point").observations;
+  const PointLandmark& target = findById(point_by_id_, into, "point");
   for (const Observation& o : observations) {
     removePointObservation(from, o.keyframe);
     const bool seen = std::any_of(target.observations.begin(), target.observations.end(),
                                   [&](const Observation& t) { return t.keyframe == o.keyframe; });
     if (!seen) addPointObservation(into, o.keyframe, o.index);
   }
-  find(points_, from, "point").bad = true;
+  findById(point_by_id_, from, "point").bad = true;
 }
 
 void VisualMap::removePoint(int point) {
-  PointLandmark& p = find(points_, point, "point");
+  PointLandmark& p = findById(point_by_id_, point, "point");
   while (!p.observations.empty()) removePointObservation(point, p.observations.back().keyframe);
   p.bad = true;
 }
 
 void VisualMap::removeLine(int line) {
-  LineLandmark& l = find(lines_, line, "line");
+  LineLandmark& l = findById(line_by_id_, line, "line");
   while (!l.observations.empty()) removeLineObservation(line, l.observations.back().keyframe);
   l.bad = true;
 }
@@ -136,7 +163,7 @@ void VisualMap::removeKeyframe(int keyframe) {
 
 void VisualMap::setFusionDirection(int line, const Eigen::Vector3d& d_fu) {
   if (!d_fu.allFinite() || !(d_fu.norm() > 0.0)) throw Error("VisualMap", "fusion direction must be finite and non-zero");
-  find(lines_, line, "line").fusion_direction = d_fu.normalized();
+  findById(line_by_id_, line, "line").fusion_direction = d_fu.normalized();
 }
 
 void VisualMap::setKeypointDepths(int keyframe, std::vector<double> depths) {
@@ -167,10 +194,10 @@ std::optional<Eigen::Isometry3d> VisualMap::odometryPrior(int keyframe) const {
 
 Keyframe& VisualMap::keyframe(int id) { return find(keyframes_, id, "keyframe"); }
 const Keyframe& VisualMap::keyframe(int id) const { return find(keyframes_, id, "keyframe"); }
-PointLandmark& VisualMap::point(int id) { return find(points_, id, "point"); }
-const PointLandmark& VisualMap::point(int id) const { return find(points_, id, "point"); }
-LineLandmark& VisualMap::line(int id) { return find(lines_, id, "line"); }
-const LineLandmark& VisualMap::line(int id) const { return find(lines_, id, "line"); }
+PointLandmark& VisualMap::point(int id) { return findById(point_by_id_, id, "point"); }
+const PointLandmark& VisualMap::point(int id) const { return findById(point_by_id_, id, "point"); }
+LineLandmark& VisualMap::line(int id) { return findById(line_by_id_, id, "line"); }
+const LineLandmark& VisualMap::line(int id) const { return findById(line_by_id_, id, "line"); }
 
 std::vector<int> VisualMap::localWindow(int keyframe, size_t n) const {
   if (!hasKeyframe(keyframe)) throw Error("VisualMap", "unknown keyframe id " + std::to_string(keyframe));

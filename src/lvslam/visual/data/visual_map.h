@@ -14,6 +14,13 @@ namespace lvslam::visual {
 
 class VisualMap {
  public:
+  VisualMap() = default;
+  // Copies rebuild the id index; moves keep it (map nodes do not move).
+  VisualMap(const VisualMap& other);
+  VisualMap& operator=(const VisualMap& other);
+  VisualMap(VisualMap&&) noexcept = default;
+  VisualMap& operator=(VisualMap&&) noexcept = default;
+
   // Takes the keyframe, assigns its id and sizes its landmark tables to its features.
   int addKeyframe(Keyframe keyframe);
   int addPointLandmark(const Eigen::Vector3d& p_world, const cv::Mat& descriptor);
@@ -82,6 +89,10 @@ class VisualMap {
   CovisibilityGraph covisibility_;
   int next_keyframe_id_ = 0, next_point_id_ = 0, next_line_id_ = 0;
   std::optional<Eigen::Isometry3d> T_world_odom_;
+  // Landmarks by id, for O(1) lookups: ids are dense and landmarks are never
+  // erased (only marked bad). Keep the copy constructor's member list in step.
+  std::vector<PointLandmark*> point_by_id_;
+  std::vector<LineLandmark*> line_by_id_;
 };
 
 // Median depth of the keyframe's point landmarks; 0 when it has none.

@@ -38,17 +38,25 @@ float intensityCentroidAngle(const cv::Mat& image, int x, int y, int radius) {
   const int limit = radius * radius + radius;
   // |m10|, |m01| < r * 255 * (2r + 1)^2: int holds them for any ORB patch.
   int m10 = 0, m01 = 0;
-  for (int v = -radius; v <= radius; ++v) {
-    int half_width = static_cast<int>(std::sqrt(static_cast<double>(limit - v * v)));
-    while (half_width * half_width > limit - v * v) --half_width;
-    while ((half_width + 1) * (half_width + 1) <= limit - v * v) ++half_width;
-    const uchar* row = image.ptr<uchar>(y + v) + x;
-    int row_sum = 0;
-    for (int u = -half_width; u <= half_width; ++u) {
-      m10 += u * row[u];
-      row_sum += row[u];
+  const auto halfWidth = [limit](int v) {
+    int w = static_cast<int>(std::sqrt(static_cast<double>(limit - v * v)));
+    while (w * w > limit - v * v) --w;
+    while ((w + 1) * (w + 1) <= limit - v * v) ++w;
+    return w;
+  };
+  const uchar* centre = image.ptr<uchar>(y) + x;
+  for (int u = -radius; u <= radius; ++u) m10 += u * centre[u];
+  // Rows v and -v together: their sum weighs u, their difference v.
+  for (int v = 1; v <= radius; ++v) {
+    const int w = halfWidth(v);
+    const uchar* below = image.ptr<uchar>(y + v) + x;
+    const uchar* above = image.ptr<uchar>(y - v) + x;
+    int difference = 0;
+    for (int u = -w; u <= w; ++u) {
+      m10 += u * (below[u] + above[u]);
+      difference += below[u] - above[u];
     }
-    m01 += v * row_sum;
+    m01 += v * difference;
   }
   // cv::fastAtan2 (degrees in [0, 360), ~0.01 deg) as cv::ORB orients.
   return cv::fastAtan2(static_cast<float>(m01), static_cast<float>(m10));
