@@ -1,7 +1,7 @@
 # Every dependency comes from a Debian 12 package (scripts/install-deps.sh).
 # Nothing is downloaded at build time.
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
-find_package(OpenCV 4.6 REQUIRED COMPONENTS core imgproc imgcodecs features2d calib3d line_descriptor)
+find_package(OpenCV 4.6 REQUIRED COMPONENTS core imgproc imgcodecs features2d calib3d)
 find_package(yaml-cpp REQUIRED)
 find_package(fmt REQUIRED)
 find_package(spdlog REQUIRED)

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make ccache pkg-config
-  libeigen3-dev libopencv-dev libopencv-contrib-dev libceres-dev
+  libeigen3-dev libopencv-dev libceres-dev
   libnanoflann-dev robin-map-dev libtbb-dev libyaml-cpp-dev
   libspdlog-dev libfmt-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev

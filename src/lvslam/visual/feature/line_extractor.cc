@@ -4,7 +4,6 @@
 #include <cmath>
 #include <string>
 
-#include <opencv2/line_descriptor.hpp>
 
 #include "lvslam/core/error.h"
 
@@ -30,28 +29,6 @@ void validate(const LineExtractorConfig& c) {
   if (c.descriptor_octave < 0 || c.descriptor_octave > 3) throw Error(where, "descriptor_octave must be in [0, 3]");
 }
 
-cv::line_descriptor::KeyLine toKeyLine(const RawSegment& s, int id, int octave) {
-  // LBD's pyramid halves each octave (reductionRatio 2).
-  const float scale = 1.0f / static_cast<float>(1 << octave);
-  cv::line_descriptor::KeyLine kl;
-  kl.startPointX = s.start.x;
-  kl.startPointY = s.start.y;
-  kl.endPointX = s.end.x;
-  kl.endPointY = s.end.y;
-  kl.sPointInOctaveX = scale * s.start.x;
-  kl.sPointInOctaveY = scale * s.start.y;
-  kl.ePointInOctaveX = scale * s.end.x;
-  kl.ePointInOctaveY = scale * s.end.y;
-  kl.lineLength = scale * s.length;
-  kl.numOfPixels = std::max(1, static_cast<int>(std::lround(scale * s.length)));
-  kl.angle = std::atan2(s.end.y - s.start.y, s.end.x - s.start.x);
-  kl.pt = 0.5f * (s.start + s.end);
-  kl.octave = octave;
-  kl.class_id = id;
-  kl.response = 0.0f;
-  kl.size = 0.0f;
-  return kl;
-}
 }  // namespace
 
 LineExtractor::LineExtractor(const LineExtractorConfig& config) : config_(config) {
@@ -60,9 +37,7 @@ LineExtractor::LineExtractor(const LineExtractorConfig& config) : config_(config
   lsd_ = cv::createLineSegmentDetector(cv::LSD_REFINE_STD, config_.scale, config_.sigma_scale,
                                        config_.quant, config_.angle_threshold_deg, 0.0,
                                        config_.density_threshold, config_.n_bins);
-  if (config_.compute_descriptors) {
-    lbd_ = cv::line_descriptor::BinaryDescriptor::createBinaryDescriptor();
-  }
+  if (config_.compute_descriptors) lbd_ = std::make_unique<LineBandDescriptor>();
 }
 
 LineExtractor::~LineExtractor() = default;
@@ -87,25 +62,14 @@ void LineExtractor::extract(const cv::Mat& gray, std::vector<RawSegment>& segmen
 
   descriptors.release();
   if (!lbd_ || segments.empty()) return;
-  std::vector<cv::line_descriptor::KeyLine> keylines;
-  keylines.reserve(segments.size());
+  // LBD on the chosen octave of a half-resolution pyramid (Zhang & Koch 2013).
+  cv::Mat image = gray;
+  for (int octave = 0; octave < config_.descriptor_octave; ++octave) cv::pyrDown(image, image);
+  const float scale = 1.0f / static_cast<float>(1 << config_.descriptor_octave);
+  lbd_->setImage(image);
+  descriptors.create(static_cast<int>(segments.size()), LineBandDescriptor::kBytes, CV_8U);
   for (size_t i = 0; i < segments.size(); ++i) {
-    keylines.push_back(toKeyLine(segments[i], static_cast<int>(i), config_.descriptor_octave));
-  }
-  cv::Mat computed;
-  lbd_->compute(gray, keylines, computed);
-  if (computed.rows != static_cast<int>(keylines.size()) || keylines.size() != segments.size()) {
-    throw Error("LineExtractor", "LBD returned " + std::to_string(computed.rows) +
-                                     " descriptors for " + std::to_string(segments.size()) +
-                                     " segments");
-  }
-  // Rows follow the keylines, which LBD may regroup; class_id is our index.
-  descriptors.create(computed.rows, computed.cols, computed.type());
-  for (size_t i = 0; i < keylines.size(); ++i) {
-    if (keylines[i].class_id < 0 || keylines[i].class_id >= computed.rows) {
-      throw Error("LineExtractor", "LBD changed a keyline's class_id");
-    }
-    computed.row(static_cast<int>(i)).copyTo(descriptors.row(keylines[i].class_id));
+    lbd_->describe(scale * segments[i].start, scale * segments[i].end, descriptors.ptr<uint8_t>(static_cast<int>(i)));
   }
 }
 

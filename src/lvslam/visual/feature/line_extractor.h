@@ -2,14 +2,14 @@
 // LSD line segments with Structure PLP-SLAM's tuned detector parameters and
 // length rejection (Cao et al., Sec. III-D "Line detection"; Shu et al. 2023),
 // described by LBD binary descriptors for matching.
+#include <memory>
 #include <vector>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-namespace cv::line_descriptor {
-class BinaryDescriptor;
-}
+#include "lvslam/visual/feature/line_band_descriptor.h"
+
 
 namespace lvslam::visual {
 
@@ -25,10 +25,8 @@ struct LineExtractorConfig {
   double min_length_ratio = 0.125;
   int max_lines = 150;  // longest kept; bounds LBD and matching cost
   // Pyramid octave (half resolution per octave) LBD describes the segments
-  // on: LBD's own multi-scale support (Zhang & Koch 2013). Octave 1 halves
-  // LBD's cost (bands 14 instead of 7 px wide) and tracked as many lines on
-  // the simulated room/hall, but failed the fused blackout system test twice
-  // (docs/benchmarks.md, "Visual speed"), so full resolution stays the default.
+  // on (line_band_descriptor.h). Full resolution is the default the system
+  // tests and benchmarks run with.
   int descriptor_octave = 0;
   bool compute_descriptors = true;
 };
@@ -55,7 +53,7 @@ class LineExtractor {
  private:
   LineExtractorConfig config_;
   cv::Ptr<cv::LineSegmentDetector> lsd_;
-  cv::Ptr<cv::line_descriptor::BinaryDescriptor> lbd_;
+  std::unique_ptr<LineBandDescriptor> lbd_;
 };
 
 }  // namespace lvslam::visual
