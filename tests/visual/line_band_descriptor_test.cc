@@ -60,6 +60,7 @@ TEST(LineBandDescriptor, DegenerateAndOutsideSegmentsAreSafe) {
   const Bits zero{};
   EXPECT_EQ(describe(img, cv::Point2f(10, 10), cv::Point2f(10, 10)), zero);  // no direction: no bits
   EXPECT_EQ(describe(img, cv::Point2f(NAN, 10), cv::Point2f(10, 10)), zero);
+  EXPECT_EQ(describe(img, cv::Point2f(-1e9f, 10), cv::Point2f(1e9f, 10)), zero);  // not 2e9 samples
   // Half outside the image: sampled with clamping, still describes the edge.
   const Bits inside = describe(img, cv::Point2f(60.0f, 99.5f), cv::Point2f(259.0f, 99.5f));
   const Bits beyond = describe(img, cv::Point2f(-140.0f, 99.5f), cv::Point2f(259.0f, 99.5f));

@@ -61,6 +61,8 @@ void LineBandDescriptor::describe(const cv::Point2f& start, const cv::Point2f& e
   const cv::Point2f along = end - start;
   const float length = std::hypot(along.x, along.y);
   if (gradient_.empty() || !(length > 0.0f) || !std::isfinite(length)) return;
+  // No segment of the image is this long; its samples would only be clamped copies.
+  if (length > 2.0f * static_cast<float>(gradient_.cols + gradient_.rows)) return;
   const cv::Point2f d = along / length;      // d_L
   const cv::Point2f o(-d.y, d.x);            // d_perp
   const int samples = std::max(1, static_cast<int>(std::lround(length)));

@@ -26,6 +26,8 @@ class LineBandDescriptor {
   // The 256-bit descriptor of the segment start -> end (pixels of that image)
   // into out[0..31]. The direction matters: LSD orients segments by their
   // gradient, so the same edge keeps its direction from frame to frame.
+  // All bits zero for a degenerate segment, one far longer than the image or
+  // before setImage.
   void describe(const cv::Point2f& start, const cv::Point2f& end, uint8_t* out) const;
 
  private:
