@@ -29,8 +29,9 @@ Landmark& findById(const std::vector<Landmark*>& by_id, int id, const char* what
 
 // Pointers to every landmark by id, into the map's nodes.
 template <typename Landmark>
-std::vector<Landmark*> indexById(std::map<int, Landmark>& landmarks, int next_id) {
-  std::vector<Landmark*> by_id(static_cast<size_t>(next_id), nullptr);
+std::vector<Landmark*> indexById(std::map<int, Landmark>& landmarks) {
+  const size_t count = landmarks.empty() ? 0 : static_cast<size_t>(landmarks.rbegin()->first) + 1;
+  std::vector<Landmark*> by_id(count, nullptr);
   for (auto& [id, landmark] : landmarks) by_id[static_cast<size_t>(id)] = &landmark;
   return by_id;
 }
@@ -39,8 +40,7 @@ std::vector<Landmark*> indexById(std::map<int, Landmark>& landmarks, int next_id
 VisualMap::VisualMap(const VisualMap& other)
     : keyframes_(other.keyframes_), points_(other.points_), lines_(other.lines_),
       covisibility_(other.covisibility_), next_keyframe_id_(other.next_keyframe_id_),
-      next_point_id_(other.next_point_id_), next_line_id_(other.next_line_id_), T_world_odom_(other.T_world_odom_),
-      point_by_id_(indexById(points_, next_point_id_)), line_by_id_(indexById(lines_, next_line_id_)) {}
+      T_world_odom_(other.T_world_odom_), point_by_id_(indexById(points_)), line_by_id_(indexById(lines_)) {}
 
 VisualMap& VisualMap::operator=(const VisualMap& other) {
   if (this != &other) *this = VisualMap(other);
@@ -59,24 +59,24 @@ int VisualMap::addKeyframe(Keyframe keyframe) {
 int VisualMap::addPointLandmark(const Eigen::Vector3d& p_world, const cv::Mat& descriptor) {
   if (!p_world.allFinite()) throw Error("VisualMap", "point landmark is not finite");
   PointLandmark p;
-  p.id = next_point_id_++;
+  p.id = static_cast<int>(point_by_id_.size());
   p.p_world = p_world;
   p.descriptor = descriptor.clone();
   point_by_id_.push_back(&points_.emplace(p.id, std::move(p)).first->second);
-  return next_point_id_ - 1;
+  return point_by_id_.back()->id;
 }
 
 int VisualMap::addLineLandmark(const PluckerLine& line_world, const Eigen::Vector3d& start_world,
                                const Eigen::Vector3d& end_world, const cv::Mat& descriptor) {
   if (!line_world.isValid(1e-6)) throw Error("VisualMap", "line landmark is not a valid Plücker line");
   LineLandmark l;
-  l.id = next_line_id_++;
+  l.id = static_cast<int>(line_by_id_.size());
   l.line_world = line_world;
   l.start_world = start_world;
   l.end_world = end_world;
   l.descriptor = descriptor.clone();
   line_by_id_.push_back(&lines_.emplace(l.id, std::move(l)).first->second);
-  return next_line_id_ - 1;
+  return line_by_id_.back()->id;
 }
 
 template <typename Landmark>

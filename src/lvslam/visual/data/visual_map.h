@@ -87,10 +87,11 @@ class VisualMap {
   std::map<int, PointLandmark> points_;
   std::map<int, LineLandmark> lines_;
   CovisibilityGraph covisibility_;
-  int next_keyframe_id_ = 0, next_point_id_ = 0, next_line_id_ = 0;
+  int next_keyframe_id_ = 0;
   std::optional<Eigen::Isometry3d> T_world_odom_;
   // Landmarks by id, for O(1) lookups: ids are dense and landmarks are never
-  // erased (only marked bad). Keep the copy constructor's member list in step.
+  // erased (only marked bad), so the next id is the index's size. Keep the
+  // copy constructor's member list in step.
   std::vector<PointLandmark*> point_by_id_;
   std::vector<LineLandmark*> line_by_id_;
 };

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <string>
 
-
 #include "lvslam/core/error.h"
 
 namespace lvslam::visual {

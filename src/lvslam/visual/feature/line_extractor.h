@@ -10,7 +10,6 @@
 
 #include "lvslam/visual/feature/line_band_descriptor.h"
 
-
 namespace lvslam::visual {
 
 struct LineExtractorConfig {
