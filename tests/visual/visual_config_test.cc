@@ -102,6 +102,25 @@ TEST(VisualConfig, MapReuseSection) {
   EXPECT_THROW(load("visual:\n  map_reuse: {radius: 1}\n"), Error);
 }
 
+TEST(VisualConfig, KeyframesSection) {
+  const KeyframePolicy defaults;
+  EXPECT_EQ(load("visual: {}\n").keyframes.max_interval, defaults.max_interval);
+  const VisualConfig c = load(
+      "visual:\n  keyframes: {tracked_ratio: 0.8, min_tracked: 60, min_interval: 6, max_interval: 10, "
+      "min_inliers: 30}\n");
+  EXPECT_DOUBLE_EQ(c.keyframes.tracked_ratio, 0.8);
+  EXPECT_EQ(c.keyframes.min_tracked, 60);
+  EXPECT_EQ(c.keyframes.min_interval, 6);
+  EXPECT_EQ(c.keyframes.max_interval, 10);
+  EXPECT_EQ(c.keyframes.min_inliers, 30);
+  expectErrorNaming("visual:\n  keyframes: {tracked_ratio: 1.5}\n", "tracked_ratio");
+  expectErrorNaming("visual:\n  keyframes: {tracked_ratio: 0}\n", "tracked_ratio");
+  expectErrorNaming("visual:\n  keyframes: {min_tracked: -1}\n", "min_tracked");
+  expectErrorNaming("visual:\n  keyframes: {min_interval: 6, max_interval: 4}\n", "min_interval");
+  expectErrorNaming("visual:\n  keyframes: {min_interval: 0}\n", "min_interval");
+  expectErrorNaming("visual:\n  keyframes: {max_intervall: 4}\n", "max_intervall");
+}
+
 TEST(VisualConfig, BadValuesAndUnknownKeysNameTheKey) {
   const std::string typo = lvslam::testing::errorMessageOf([] { load("visual:\n  orb: {max_featurs: 10}\n"); });
   EXPECT_NE(typo.find("max_featurs"), std::string::npos) << typo;

@@ -75,7 +75,7 @@ void loadOptimisation(const YamlConfig& n, VisualConfig& c) {
 VisualConfig loadVisualConfig(const YamlConfig& section) {
   VisualConfig c;
   rejectUnknownKeys(section, {"orb", "lines", "pose", "bundle_adjustment", "initializer", "keypoint_depths",
-                             "lidar_pose_priors", "map_reuse"});
+                             "lidar_pose_priors", "map_reuse", "keyframes"});
   loadFeatures(section, c.features);
   loadOptimisation(section, c);
   if (const auto init = section.find("initializer")) {
@@ -133,6 +133,21 @@ VisualConfig loadVisualConfig(const YamlConfig& section) {
     }
     m.nearby_max = static_cast<std::size_t>(n);
     m.nearby_min_age = static_cast<std::size_t>(age);
+  }
+  if (const auto kf = section.find("keyframes")) {
+    rejectUnknownKeys(*kf, {"tracked_ratio", "min_tracked", "min_interval", "max_interval", "min_inliers"});
+    KeyframePolicy& k = c.keyframes;
+    k.tracked_ratio = kf->getDouble("tracked_ratio", k.tracked_ratio);
+    k.min_tracked = kf->getInt("min_tracked", k.min_tracked);
+    k.min_interval = kf->getInt("min_interval", k.min_interval);
+    k.max_interval = kf->getInt("max_interval", k.max_interval);
+    k.min_inliers = kf->getInt("min_inliers", k.min_inliers);
+    if (!(k.tracked_ratio > 0.0 && k.tracked_ratio <= 1.0)) kf->at("tracked_ratio").fail("must be in (0, 1]");
+    if (k.min_tracked < 0) kf->at("min_tracked").fail("must be >= 0");
+    if (k.min_inliers < 0) kf->at("min_inliers").fail("must be >= 0");
+    if (k.min_interval < 1 || k.max_interval < k.min_interval)
+      kf->fail("1 <= min_interval <= max_interval required, got " + std::to_string(k.min_interval) + " and " +
+               std::to_string(k.max_interval));
   }
   // The extractors and the initializer validate the rest when constructed;
   // do it now so a bad file fails at load time, naming the file.

@@ -10,6 +10,7 @@
 #include "lvslam/visual/module/odometry_map_correction.h"
 #include "lvslam/visual/optimize/local_window_adjustment.h"
 #include "lvslam/visual/optimize/pose_optimization.h"
+#include "lvslam/visual/tracking/keyframe_policy.h"
 #include "lvslam/visual/tracking/local_keyframes.h"
 
 namespace lvslam::visual {
@@ -22,6 +23,7 @@ struct VisualConfig {
   LocalWindowConfig local_window;  // includes the BA settings
   TwoViewInitializerConfig initializer;
   LocalKeyframeConfig local_map;  // keyframes tracked against, nearby ones included (map reuse)
+  KeyframePolicy keyframes;       // when a tracked frame becomes a keyframe
   // LiDAR depth of keyframe keypoints (VisualSlam::setKeypointDepths) enters
   // local BA as depth residuals (local_window.ba.depth_*); off: ignored.
   bool use_keypoint_depths = true;

@@ -9,6 +9,7 @@
 #include "lvslam/visual/module/local_mapper.h"
 #include "lvslam/visual/optimize/solver_logging.h"
 #include "lvslam/visual/tracking/frame_tracker.h"
+#include "lvslam/visual/tracking/keyframe_policy.h"
 #include "lvslam/visual/tracking/local_keyframes.h"
 #include "lvslam/visual/tracking/motion_model.h"
 #include "lvslam/visual/tracking/relocalization.h"
@@ -311,11 +312,7 @@ bool VisualSlam::Impl::needKeyframe() const {
     ref_tracked = 0;
     for (const int id : map.keyframe(reference_keyframe).point_landmark) ref_tracked += id >= 0 && !map.point(id).bad;
   }
-  const int since = frame_index - last_keyframe_frame;
-  const bool few = current.point_inliers < config.keyframe_tracked_ratio * ref_tracked ||
-                   current.point_inliers < config.keyframe_min_tracked;
-  return current.point_inliers > 15 &&
-         (since >= config.max_keyframe_interval || (few && since >= config.min_keyframe_interval));
+  return keyframeNeeded(config.visual.keyframes, current.point_inliers, ref_tracked, frame_index - last_keyframe_frame);
 }
 
 void VisualSlam::Impl::insertKeyframe() {

@@ -55,14 +55,6 @@ struct VisualSlamConfig {
   int relocalize_frames = 15;
   size_t relocalize_candidates = 4;  // covisible neighbours of the reference keyframe tried as pose guesses
   int relocalize_min_inliers = 50;   // point inliers to accept a relocalisation (ORB-SLAM: 50)
-  // Keyframes (ORB-SLAM's c2): tracked points below this share of those the
-  // reference keyframe tracked when it was inserted, or this many frames since
-  // the last keyframe. Max 5: 8 or 10 cost accuracy on the 8 s system test
-  // run (docs/benchmarks.md, "Visual speed").
-  double keyframe_tracked_ratio = 0.9;
-  int keyframe_min_tracked = 100;  // fewer tracked points: a keyframe (new points are needed)
-  int min_keyframe_interval = 3;
-  int max_keyframe_interval = 5;
   int fusion_line_lifetime = 15;  // frames a fusion line waits for a keyframe observation
   size_t lidar_pose_buffer = 64;  // LiDAR poses kept for keyframes (> init window + LiDAR lag)
   PointTriangulationConfig triangulation;
