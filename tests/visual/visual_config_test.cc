@@ -71,8 +71,10 @@ TEST(VisualConfig, MapCorrectionUnderTheLidarPosePriors) {
   EXPECT_DOUBLE_EQ(d.map_correction.graph.prior_sigma_m, d.local_window.ba.prior_sigma_m);
   const VisualConfig c = load(
       "visual:\n  lidar_pose_priors:\n    sigma_m: 0.03\n    sigma_deg: 0.4\n"
-      "    map_correction: {every_keyframes: 5, min_covisibility: 20, sigma_m: 0.01, sigma_deg: 0.2, iterations: 4}\n");
+      "    map_correction: {every_keyframes: 5, window_keyframes: 40, min_covisibility: 20, sigma_m: 0.01,\n"
+      "                     sigma_deg: 0.2, iterations: 4}\n");
   EXPECT_EQ(c.map_correction.every_keyframes, 5);
+  EXPECT_EQ(c.map_correction.window_keyframes, 40);
   EXPECT_EQ(c.map_correction.min_covisibility, 20);
   EXPECT_DOUBLE_EQ(c.map_correction.graph.edge_sigma_m, 0.01);
   EXPECT_DOUBLE_EQ(c.map_correction.graph.edge_sigma_deg, 0.2);
@@ -83,6 +85,9 @@ TEST(VisualConfig, MapCorrectionUnderTheLidarPosePriors) {
             0);  // off
   expectErrorNaming("visual:\n  lidar_pose_priors: {map_correction: {sigma_m: 0}}\n", "map_correction");
   EXPECT_THROW(load("visual:\n  lidar_pose_priors: {map_correction: {every_keyframes: -1}}\n"), Error);
+  EXPECT_EQ(load("visual:\n  lidar_pose_priors: {map_correction: {window_keyframes: 0}}\n").map_correction.window_keyframes,
+            0);  // the whole map
+  expectErrorNaming("visual:\n  lidar_pose_priors: {map_correction: {window_keyframes: -5}}\n", "map_correction");
   EXPECT_THROW(load("visual:\n  lidar_pose_priors: {map_correction: {every: 3}}\n"), Error);
 }
 

@@ -103,16 +103,20 @@ VisualConfig loadVisualConfig(const YamlConfig& section) {
     if (!(ba.prior_sigma_m > 0.0) || !(ba.prior_sigma_deg > 0.0) || !(ba.prior_huber_delta > 0.0))
       priors->fail("sigma_m, sigma_deg and huber_delta must be positive");
     if (const auto correction = priors->find("map_correction")) {
-      rejectUnknownKeys(*correction, {"every_keyframes", "min_covisibility", "sigma_m", "sigma_deg", "iterations"});
+      rejectUnknownKeys(*correction,
+                        {"every_keyframes", "window_keyframes", "min_covisibility", "sigma_m", "sigma_deg", "iterations"});
       MapCorrectionConfig& m = c.map_correction;
       m.every_keyframes = correction->getInt("every_keyframes", m.every_keyframes);
+      m.window_keyframes = correction->getInt("window_keyframes", m.window_keyframes);
       m.min_covisibility = correction->getInt("min_covisibility", m.min_covisibility);
       m.graph.edge_sigma_m = correction->getDouble("sigma_m", m.graph.edge_sigma_m);
       m.graph.edge_sigma_deg = correction->getDouble("sigma_deg", m.graph.edge_sigma_deg);
       m.graph.max_iterations = correction->getInt("iterations", m.graph.max_iterations);
-      if (m.every_keyframes < 0 || m.min_covisibility < 1 || !(m.graph.edge_sigma_m > 0.0) ||
+      if (m.every_keyframes < 0 || m.window_keyframes < 0 || m.min_covisibility < 1 || !(m.graph.edge_sigma_m > 0.0) ||
           !(m.graph.edge_sigma_deg > 0.0) || m.graph.max_iterations < 1) {
-        correction->fail("every_keyframes >= 0, min_covisibility >= 1, iterations >= 1 and positive sigmas required");
+        correction->fail(
+            "every_keyframes >= 0, window_keyframes >= 0, min_covisibility >= 1, iterations >= 1 and positive sigmas "
+            "required");
       }
     }
   }

@@ -2,71 +2,128 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <set>
+#include <unordered_set>
 #include <utility>
 
 #include "lvslam/core/se3.h"
 
 namespace lvslam::visual {
 
-MapCorrectionResult correctMapWithOdometry(VisualMap& map, const MapCorrectionConfig& config) {
-  MapCorrectionResult result;
+namespace {
+
+// The graph's nodes: the window's keyframes first (free), then the held ones.
+struct CorrectionGraph {
   std::vector<int> ids;
   std::unordered_map<int, int> index;
   std::vector<PoseGraphNode> nodes;
-  for (const auto& [id, keyframe] : map.keyframes()) {
+  int free = 0;
+  int predecessor = -1;  // node of the keyframe before the window, if any
+
+  void add(const VisualMap& map, int id, bool held) {
     index[id] = static_cast<int>(ids.size());
     ids.push_back(id);
-    nodes.push_back({keyframe.T_camera_world, map.odometryPrior(id)});
+    PoseGraphNode node{map.keyframe(id).T_camera_world, map.odometryPrior(id)};
+    node.fixed = held;
+    nodes.push_back(node);
+    free += !held;
   }
-  result.keyframes = static_cast<int>(nodes.size());
-  if (nodes.size() < 2) return result;
+};
 
-  // Edges once per pair: covisible keyframes and, so the graph is connected,
-  // consecutive ones.
+CorrectionGraph buildNodes(const VisualMap& map, const MapCorrectionConfig& config) {
+  CorrectionGraph g;
+  const auto& keyframes = map.keyframes();
+  const auto size = static_cast<std::ptrdiff_t>(keyframes.size());
+  const std::ptrdiff_t window = config.window_keyframes > 0 ? std::min<std::ptrdiff_t>(size, config.window_keyframes)
+                                                            : size;
+  const auto first_free = std::prev(keyframes.end(), window);  // ids grow with insertion: the newest
+  for (auto it = first_free; it != keyframes.end(); ++it) g.add(map, it->first, false);
+  // Held: the keyframe before the window (the chain goes on) and older ones sharing landmarks with it.
+  if (first_free != keyframes.begin()) {
+    g.predecessor = static_cast<int>(g.ids.size());
+    g.add(map, std::prev(first_free)->first, true);
+  }
+  for (int i = 0; i < g.free; ++i) {
+    for (const int other : map.covisibility().neighbours(g.ids[i], config.min_covisibility))
+      if (!g.index.count(other) && map.hasKeyframe(other)) g.add(map, other, true);
+  }
+  return g;
+}
+
+// Edges once per pair: covisible keyframes and, so the graph is connected,
+// consecutive ones (the held predecessor to the window's first).
+std::vector<PoseGraphEdge> buildEdges(const VisualMap& map, const CorrectionGraph& g, int min_covisibility) {
   std::set<std::pair<int, int>> pairs;
-  for (size_t i = 0; i < ids.size(); ++i) {
-    if (i > 0) pairs.insert({static_cast<int>(i) - 1, static_cast<int>(i)});
-    for (const int other : map.covisibility().neighbours(ids[i], config.min_covisibility)) {
-      const auto it = index.find(other);
-      if (it == index.end()) continue;
-      const int j = it->second;
-      pairs.insert({std::min<int>(i, j), std::max<int>(i, j)});
+  for (int i = 0; i < g.free; ++i) {
+    if (i > 0) pairs.insert({i - 1, i});
+    for (const int other : map.covisibility().neighbours(g.ids[i], min_covisibility)) {
+      const auto it = g.index.find(other);
+      if (it == g.index.end()) continue;
+      pairs.insert({std::min(i, it->second), std::max(i, it->second)});
     }
   }
+  if (g.predecessor >= 0 && g.free > 0) pairs.insert({0, g.predecessor});
   std::vector<PoseGraphEdge> edges;
   edges.reserve(pairs.size());
   for (const auto& [a, b] : pairs)
-    edges.push_back({a, b, nodes[a].T_camera_world * nodes[b].T_camera_world.inverse()});
+    edges.push_back({a, b, g.nodes[a].T_camera_world * g.nodes[b].T_camera_world.inverse()});
+  return edges;
+}
 
-  result.graph = optimizePoseGraph(nodes, edges, config.graph);
+// Landmarks move with their first observer, when it moved: those are all
+// in the window keyframes' tables.
+void moveLandmarks(VisualMap& map, const std::vector<int>& window, const MapCorrectionResult& result) {
+  std::unordered_set<int> points, lines;
+  for (const int kf : window) {
+    const Keyframe& k = map.keyframe(kf);
+    for (const int id : k.point_landmark) {
+      if (id < 0 || !points.insert(id).second) continue;
+      PointLandmark& p = map.point(id);
+      if (p.bad || p.observations.empty()) continue;
+      const auto M = result.T_new_old.find(p.observations.front().keyframe);
+      if (M != result.T_new_old.end()) p.p_world = M->second * p.p_world;
+    }
+    for (const int id : k.line_landmark) {
+      if (id < 0 || !lines.insert(id).second) continue;
+      LineLandmark& l = map.line(id);
+      if (l.bad || l.observations.empty()) continue;
+      const auto found = result.T_new_old.find(l.observations.front().keyframe);
+      if (found == result.T_new_old.end()) continue;
+      const Eigen::Isometry3d& M = found->second;
+      l.line_world = l.line_world.transformed(M);
+      l.start_world = M * l.start_world;
+      l.end_world = M * l.end_world;
+      if (l.fusion_direction) l.fusion_direction = M.linear() * *l.fusion_direction;
+    }
+  }
+}
+
+}  // namespace
+
+MapCorrectionResult correctMapWithOdometry(VisualMap& map, const MapCorrectionConfig& config) {
+  MapCorrectionResult result;
+  CorrectionGraph g = buildNodes(map, config);
+  result.keyframes = g.free;
+  result.held_keyframes = static_cast<int>(g.ids.size()) - g.free;
+  if (g.ids.size() < 2) return result;
+  const std::vector<PoseGraphEdge> edges = buildEdges(map, g, config.min_covisibility);
+  result.graph = optimizePoseGraph(g.nodes, edges, config.graph);
   if (!result.graph.solved) return result;
 
   // The map still holds the old poses until each keyframe is written back.
-  for (size_t i = 0; i < ids.size(); ++i) {
-    Eigen::Isometry3d& T_camera_world = map.keyframe(ids[i]).T_camera_world;
-    const Eigen::Isometry3d M = nodes[i].T_camera_world.inverse() * T_camera_world;
-    const Eigen::Vector3d shift = T_camera_world.inverse().translation() - nodes[i].T_camera_world.inverse().translation();
+  const std::vector<int> window(g.ids.begin(), g.ids.begin() + g.free);
+  for (int i = 0; i < g.free; ++i) {
+    Eigen::Isometry3d& T_camera_world = map.keyframe(g.ids[i]).T_camera_world;
+    const Eigen::Isometry3d& T_new = g.nodes[i].T_camera_world;
+    const Eigen::Isometry3d M = T_new.inverse() * T_camera_world;
+    const Eigen::Vector3d shift = T_camera_world.inverse().translation() - T_new.inverse().translation();
     result.max_shift_m = std::max(result.max_shift_m, shift.norm());
     result.max_rotation_deg = std::max(result.max_rotation_deg, rotationAngle(M) * 180.0 / M_PI);
-    result.T_new_old[ids[i]] = M;
-    T_camera_world = nodes[i].T_camera_world;
+    result.T_new_old[g.ids[i]] = M;
+    T_camera_world = T_new;
   }
-  for (const auto& [id, point] : map.points()) {
-    if (point.bad || point.observations.empty()) continue;
-    const Eigen::Isometry3d& M = result.T_new_old.at(point.observations.front().keyframe);
-    PointLandmark& p = map.point(id);
-    p.p_world = M * p.p_world;
-  }
-  for (const auto& [id, line] : map.lines()) {
-    if (line.bad || line.observations.empty()) continue;
-    const Eigen::Isometry3d& M = result.T_new_old.at(line.observations.front().keyframe);
-    LineLandmark& l = map.line(id);
-    l.line_world = l.line_world.transformed(M);
-    l.start_world = M * l.start_world;
-    l.end_world = M * l.end_world;
-    if (l.fusion_direction) l.fusion_direction = M.linear() * *l.fusion_direction;
-  }
+  moveLandmarks(map, window, result);
   return result;
 }
 

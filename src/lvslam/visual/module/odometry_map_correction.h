@@ -1,11 +1,13 @@
 #pragma once
-// Map-wide correction with the LiDAR odometry (lvslam's addition,
-// docs/visual-subsystem.md "LiDAR pose priors"): every keyframe of the visual
-// map enters a pose graph (optimize/odometry_pose_graph.h) with edges between
-// covisible and consecutive keyframes and the LiDAR odometry's poses as
-// priors; the landmarks then move rigidly with their first observer. Local BA
-// alone cannot remove the drift: the keyframes outside its window are fixed
-// and hold it.
+// Map correction with the LiDAR odometry (lvslam's addition,
+// docs/visual-subsystem.md "LiDAR pose priors"): the newest keyframes of the
+// visual map enter a pose graph (optimize/odometry_pose_graph.h) with edges
+// between covisible and consecutive keyframes and the LiDAR odometry's poses
+// as priors; the landmarks then move rigidly with their first observer. Local
+// BA alone cannot remove the drift: the keyframes outside its window are
+// fixed and hold it. Older keyframes were corrected while they were new: the
+// ones linked to the window hold still in the graph and anchor it, so a
+// correction costs the same at any map size.
 #include <unordered_map>
 
 #include "lvslam/visual/data/visual_map.h"
@@ -16,6 +18,7 @@ namespace lvslam::visual {
 struct MapCorrectionConfig {
   int every_keyframes = 10;    // a correction after this many new keyframes; 0: never
   int min_covisibility = 50;   // landmarks two keyframes share to be an edge
+  int window_keyframes = 50;   // the newest keyframes corrected; 0: the whole map
   PoseGraphConfig graph;
 };
 
@@ -24,7 +27,8 @@ struct MapCorrectionResult {
   // Per keyframe id, when solved: the world motion T_new_old of everything
   // the keyframe carries (p_new = T_new_old p_old).
   std::unordered_map<int, Eigen::Isometry3d> T_new_old;
-  int keyframes = 0;
+  int keyframes = 0;        // corrected (the window)
+  int held_keyframes = 0;   // older ones linked to the window, held still
   double max_shift_m = 0.0, max_rotation_deg = 0.0;  // largest keyframe correction
 };
 

@@ -82,8 +82,12 @@ PoseGraphResult optimizePoseGraph(std::vector<PoseGraphNode>& nodes, const std::
       throw Error("optimizePoseGraph", "edge (" + std::to_string(e.a) + ", " + std::to_string(e.b) +
                                            ") is not between two of the " + std::to_string(n) + " nodes");
   }
-  for (const PoseGraphNode& node : nodes) result.priors += node.prior_T_camera_world.has_value();
-  if (result.priors == 0) return result;  // nothing fixes the gauge
+  bool any_fixed = false;
+  for (const PoseGraphNode& node : nodes) {
+    result.priors += node.prior_T_camera_world.has_value() && !node.fixed;
+    any_fixed = any_fixed || node.fixed;
+  }
+  if (result.priors == 0 && !any_fixed) return result;  // nothing fixes the gauge
 
   std::vector<PoseBlock> blocks(nodes.size());
   for (int i = 0; i < n; ++i) blocks[i] = toPoseBlock(nodes[i].T_camera_world);
@@ -101,13 +105,16 @@ PoseGraphResult optimizePoseGraph(std::vector<PoseGraphNode>& nodes, const std::
     ++result.edges;
   }
   for (int i = 0; i < n; ++i) {
-    if (!nodes[i].prior_T_camera_world) continue;
+    if (!nodes[i].prior_T_camera_world || nodes[i].fixed) continue;  // a fixed node's prior changes nothing
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PriorPoseError, 6, 7>(
                                  new PriorPoseError(*nodes[i].prior_T_camera_world, prior_t, prior_r)),
                              new ceres::HuberLoss(config.prior_huber_delta), blocks[i].data());
   }
   for (int i = 0; i < n; ++i)
-    if (problem.HasParameterBlock(blocks[i].data())) problem.SetManifold(blocks[i].data(), &manifold);
+    if (problem.HasParameterBlock(blocks[i].data())) {
+      problem.SetManifold(blocks[i].data(), &manifold);
+      if (nodes[i].fixed) problem.SetParameterBlockConstant(blocks[i].data());
+    }
 
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
@@ -121,7 +128,8 @@ PoseGraphResult optimizePoseGraph(std::vector<PoseGraphNode>& nodes, const std::
   result.initial_cost = summary.initial_cost;
   result.final_cost = summary.final_cost;
   if (!summary.IsSolutionUsable()) return result;
-  for (int i = 0; i < n; ++i) nodes[i].T_camera_world = fromPoseBlock(blocks[i].data());
+  for (int i = 0; i < n; ++i)
+    if (!nodes[i].fixed) nodes[i].T_camera_world = fromPoseBlock(blocks[i].data());
   result.solved = true;
   return result;
 }

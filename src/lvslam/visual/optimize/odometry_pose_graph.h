@@ -14,6 +14,7 @@ namespace lvslam::visual {
 struct PoseGraphNode {
   Eigen::Isometry3d T_camera_world = Eigen::Isometry3d::Identity();
   std::optional<Eigen::Isometry3d> prior_T_camera_world;  // from the LiDAR odometry
+  bool fixed = false;  // enters its edges as it stands, is not optimised
 };
 
 // Edge a -> b (indices into the nodes) measuring T_a_b = T_a_world * T_b_world^-1.
@@ -32,7 +33,7 @@ struct PoseGraphConfig {
 };
 
 struct PoseGraphResult {
-  bool solved = false;  // false: no prior (no gauge) or the solver failed; poses unchanged
+  bool solved = false;  // false: no prior nor fixed node (no gauge) or the solver failed; poses unchanged
   int priors = 0, edges = 0, iterations = 0;
   double initial_cost = 0.0, final_cost = 0.0;
 };
