@@ -1,5 +1,7 @@
 #include "lvslam/system/pose_fusion.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "lvslam/system/fused_output_trajectory.h"
@@ -57,6 +59,36 @@ TEST(PoseFusion, WithoutInformationTheFirstEstimateStays) {
   // All information on b: b.
   EXPECT_LT((centre(fusePoses(a, Matrix6d::Zero(), b, isotropicPoseInformation(0.01, 0.01))) - centre(b)).norm(),
             1e-12);
+}
+
+// Without drift the LiDAR information is the isotropic one; with it, the
+// variances grow linearly in the path (a random walk), so after s metres
+// sigma^2 = sigma0^2 + drift^2 s, and a fused pose leans further toward the other estimate.
+TEST(PoseFusion, LidarInformationShrinksWithThePathSinceTheAnchor) {
+  PoseFusionConfig c;
+  c.lidar_sigma_m = 0.005;
+  c.lidar_sigma_deg = 0.15;
+  c.lidar_drift_m = 0.0;
+  c.lidar_drift_deg = 0.0;
+  const Matrix6d H0 = isotropicPoseInformation(0.005, 0.15 * M_PI / 180.0);
+  EXPECT_TRUE(lidarPoseInformation(c, 40.0).isApprox(H0, 1e-12));  // drift off
+  c.lidar_drift_m = 0.003;
+  c.lidar_drift_deg = 0.02;
+  EXPECT_TRUE(lidarPoseInformation(c, 0.0).isApprox(H0, 1e-12));
+  EXPECT_TRUE(lidarPoseInformation(c, -1.0).isApprox(H0, 1e-12));  // no negative paths
+  const Matrix6d H = lidarPoseInformation(c, 16.0);
+  const double var_m = 0.005 * 0.005 + 0.003 * 0.003 * 16.0;
+  const double var_rad = std::pow(0.15 * M_PI / 180.0, 2) + std::pow(0.02 * M_PI / 180.0, 2) * 16.0;
+  EXPECT_NEAR(H(0, 0), 1.0 / var_m, 1e-9 / var_m);
+  EXPECT_NEAR(H(2, 2), 1.0 / var_m, 1e-9 / var_m);
+  EXPECT_NEAR(H(4, 4), 1.0 / var_rad, 1e-9 / var_rad);
+  EXPECT_EQ(H(0, 4), 0.0);
+  // The visual estimate b, at the LiDAR's base information: halfway; with 16 m of drift, closer to b.
+  const Eigen::Isometry3d a = kTCameraWorld;
+  const Eigen::Isometry3d b = shifted(a, Eigen::Vector3d(0.01, 0.0, 0.0));
+  const double w = (centre(fusePoses(a, H, b, H0)) - centre(a)).norm() / 0.01;
+  EXPECT_NEAR(w, H0(0, 0) / (H0(0, 0) + H(0, 0)), 1e-9);
+  EXPECT_GT(w, 0.5);
 }
 
 // The output follows the LiDAR exactly without a target, reaches a target

@@ -80,18 +80,24 @@ TEST(SystemConfig, OutputFusionKeysAreReadAndChecked) {
       "  enabled: false\n"
       "  lidar_sigma_m: 0.01\n"
       "  lidar_sigma_deg: 0.3\n"
+      "  lidar_drift_m: 0.004\n"
+      "  lidar_drift_deg: 0.02\n"
       "  visual_pixel_sigma: 4\n"
       "  max_step_m: 0.005\n"
       "  max_step_deg: 0.2\n");
   EXPECT_FALSE(c.output_fusion.enabled);
   EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_m, 0.01);
   EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_deg, 0.3);
+  EXPECT_DOUBLE_EQ(c.output_fusion.lidar_drift_m, 0.004);
+  EXPECT_DOUBLE_EQ(c.output_fusion.lidar_drift_deg, 0.02);
   EXPECT_DOUBLE_EQ(c.output_fusion.visual_pixel_sigma, 4.0);
   EXPECT_DOUBLE_EQ(c.output_fusion.max_step_m, 0.005);
   EXPECT_DOUBLE_EQ(c.output_fusion.max_step_deg, 0.2);
   EXPECT_TRUE(load("{}").output_fusion.enabled);
   EXPECT_THROW(load("output_fusion:\n  lidar_sigma_m: 0\n"), lvslam::Error);
   EXPECT_THROW(load("output_fusion:\n  visual_pixel_sigma: -1\n"), lvslam::Error);
+  EXPECT_THROW(load("output_fusion:\n  lidar_drift_m: -0.001\n"), lvslam::Error);
+  EXPECT_DOUBLE_EQ(load("output_fusion:\n  lidar_drift_deg: 0\n").output_fusion.lidar_drift_deg, 0.0);  // off
   EXPECT_THROW(load("output_fusion:\n  max_step_deg: .nan\n"), lvslam::Error);
   const std::string typo = errorMessageOf([] { load("output_fusion:\n  visual_pixel_sigmas: 3\n"); });
   EXPECT_NE(typo.find("visual_pixel_sigmas"), std::string::npos) << typo;

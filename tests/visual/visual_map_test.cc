@@ -137,6 +137,29 @@ TEST(VisualMap, CopiesAndMovesLookUpTheirOwnLandmarks) {
   EXPECT_THROW(moved.line(-1), Error);
 }
 
+// The time a pose's landmarks were mapped: the median of their first
+// observers' times, whoever observed them later; bad and absent ones skipped.
+TEST(VisualMap, MedianFirstSeenTakesEachLandmarksFirstObserver) {
+  VisualMap map;
+  std::vector<int> kf;
+  for (int i = 0; i < 4; ++i) {
+    Keyframe k = keyframeWith(4, 0);
+    k.timestamp = 10.0 * i;
+    kf.push_back(map.addKeyframe(k));
+  }
+  std::vector<int> points;
+  for (int i = 0; i < 4; ++i) {
+    points.push_back(map.addPointLandmark(Eigen::Vector3d(i, 0, 5), cv::Mat()));
+    map.addPointObservation(points[i], kf[i], i);                // first seen by keyframe i (t = 10 i)
+    if (i < 3) map.addPointObservation(points[i], kf[3], i);     // all seen again by the newest
+  }
+  EXPECT_FALSE(medianFirstSeen(map, {}).has_value());
+  EXPECT_FALSE(medianFirstSeen(map, {-1, -1}).has_value());
+  EXPECT_DOUBLE_EQ(*medianFirstSeen(map, {points[0], -1, points[1], points[2]}), 10.0);
+  map.removePoint(points[0]);
+  EXPECT_DOUBLE_EQ(*medianFirstSeen(map, {points[0], points[1], points[2], points[3]}), 20.0);
+}
+
 TEST(VisualMap, RejectsInconsistentObservations) {
   VisualMap map;
   const int kf = map.addKeyframe(keyframeWith(2, 0));

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "lvslam/system/fused_output_trajectory.h"
+#include "lvslam/system/odometry_path_length.h"
 #include "lvslam/system/output_trajectory.h"
 #include "lvslam/system/pose_fusion.h"
 
@@ -48,13 +49,14 @@ std::optional<MotionDisagreement> frameDisagreement(const PipelineRecords& recor
 // are there (pose_fusion.h): T_odom_camera, the visual pose carried into the
 // odometry frame by its map's alignment.
 std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult& r, const LidarFrameRecord& l,
-                                                const Eigen::Isometry3d& T_lidar_camera, const PoseFusionConfig& c) {
+                                                const Eigen::Isometry3d& T_lidar_camera, const PoseFusionConfig& c,
+                                                const OdometryPathLength& path) {
   if (!r.pose_valid || !r.pose_information || !r.T_world_odom || !l.T_odom_lidar || !l.pose_reliable)
     return std::nullopt;
   const Eigen::Isometry3d T_odom_camera_visual = r.T_world_odom->inverse() * r.T_world_camera;
   const Eigen::Isometry3d T_odom_camera_lidar = *l.T_odom_lidar * T_lidar_camera;
   const Matrix6d H_visual = *r.pose_information / (c.visual_pixel_sigma * c.visual_pixel_sigma);
-  const Matrix6d H_lidar = isotropicPoseInformation(c.lidar_sigma_m, c.lidar_sigma_deg * M_PI / 180.0);
+  const Matrix6d H_lidar = lidarPoseInformation(c, r.anchor_time ? path.since(*r.anchor_time) : 0.0);
   return fusePoses(T_odom_camera_visual.inverse(), H_visual, T_odom_camera_lidar.inverse(), H_lidar).inverse();
 }
 
@@ -132,6 +134,7 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
                       const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
   DetectionModule detection(config.detection);
   FusedOutputTrajectory output(config.output_fusion.max_step_m, config.output_fusion.max_step_deg);
+  OdometryPathLength path;
   for (std::size_t j = 0; j < records.visual.size(); ++j) {
     const VisualFrameRecord& v = records.visual[j];
     const LidarFrameRecord& l = records.lidar[j];
@@ -139,8 +142,10 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
     FrameOutput frame{v.t, std::nullopt, source, detection.lastProblem()};
     if (v.result.T_world_odom) out.T_world_map[v.result.map_id] = v.result.T_world_odom->inverse();
     if (l.T_odom_lidar) {  // none before the LiDAR's first pose
+      path.add(v.t, (*l.T_odom_lidar * T_lidar_camera).translation());
       std::optional<Eigen::Isometry3d> target;
-      if (source == OutputSource::kVisual) target = fusedWithLidar(v.result, l, T_lidar_camera, config.output_fusion);
+      if (source == OutputSource::kVisual)
+        target = fusedWithLidar(v.result, l, T_lidar_camera, config.output_fusion, path);
       frame.fused = target.has_value();
       frame.T_world_camera = output.add(v.t, *l.T_odom_lidar * T_lidar_camera, target);
     }

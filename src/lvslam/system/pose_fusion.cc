@@ -1,5 +1,8 @@
 #include "lvslam/system/pose_fusion.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Cholesky>
 
 namespace lvslam::system {
@@ -9,6 +12,14 @@ Matrix6d isotropicPoseInformation(double sigma_m, double sigma_rad) {
   H.topLeftCorner<3, 3>().diagonal().setConstant(1.0 / (sigma_m * sigma_m));
   H.bottomRightCorner<3, 3>().diagonal().setConstant(1.0 / (sigma_rad * sigma_rad));
   return H;
+}
+
+Matrix6d lidarPoseInformation(const PoseFusionConfig& c, double path_m) {
+  const double s = std::max(path_m, 0.0);
+  const double deg = M_PI / 180.0;
+  const double sigma_m = std::sqrt(c.lidar_sigma_m * c.lidar_sigma_m + c.lidar_drift_m * c.lidar_drift_m * s);
+  const double sigma_deg = std::sqrt(c.lidar_sigma_deg * c.lidar_sigma_deg + c.lidar_drift_deg * c.lidar_drift_deg * s);
+  return isotropicPoseInformation(sigma_m, sigma_deg * deg);
 }
 
 Eigen::Isometry3d fusePoses(const Eigen::Isometry3d& T_camera_world_a, const Matrix6d& information_a,

@@ -18,6 +18,16 @@ struct PoseFusionConfig {
   // and of the rotation.
   double lidar_sigma_m = 0.005;
   double lidar_sigma_deg = 0.15;
+  // The LiDAR odometry drifts: over a path of s metres since the visual
+  // landmarks a pose rests on were mapped (and pulled onto the odometry of
+  // that time, visual/module/odometry_map_correction.h), its error against
+  // them grows by these per sqrt(m) (a random walk in path length). The
+  // error both share up to then is common and leaves the weights alone.
+  // Measured on the LiDAR odometry of a 300 s hall: relative error 7 mm at
+  // 1-2 m, 14 mm at 8 m, 23 mm at 16 m (docs/benchmarks.md, "Drift-aware
+  // output fusion"). 0: off.
+  double lidar_drift_m = 0.005;
+  double lidar_drift_deg = 0.03;
   // The tracker's information assumes 1 px of noise per ORB level-0
   // observation and exact landmarks; this inflates it to what it is (the
   // map's own error included). Chosen on the seed-1 room, hall and gate
@@ -33,6 +43,9 @@ struct PoseFusionConfig {
 // the left update T_camera_world <- exp(delta) T_camera_world: to first
 // order the centre moves by -R^T rho and the rotation by phi.
 Matrix6d isotropicPoseInformation(double sigma_m, double sigma_rad);
+
+// The LiDAR pose's information after `path_m` metres of drift (above).
+Matrix6d lidarPoseInformation(const PoseFusionConfig& config, double path_m);
 
 // The Gaussian product of two estimates of T_camera_world, linearised at
 // the first: delta = (H_a + H_b)^-1 H_b log(T_b T_a^-1), T = exp(delta) T_a.

@@ -27,7 +27,8 @@ std::string jsonList(const std::vector<std::string>& items) {
 
 std::string visualJson(const VisualFrameRecord& v) {
   const visual::VisualFrameResult& r = v.result;
-  return JsonObject()
+  JsonObject o;
+  o
       .addString("state", visual::trackingStateName(r.state))
       .addRaw("pose", r.pose_valid ? "true" : "false")
       .addNumber("map_id", r.map_id)
@@ -40,8 +41,9 @@ std::string visualJson(const VisualFrameRecord& v) {
       .addNumber("brightness", r.brightness)
       .addNumber("contrast", r.contrast)
       .addNumber("fusion_lines_added", v.fusion_lines_added)
-      .addCount("keypoint_depths", v.keypoint_depths)  // from the raw scans
-      .str();
+      .addCount("keypoint_depths", v.keypoint_depths);  // from the raw scans
+  if (r.anchor_time) o.addNumber("landmark_age_s", r.timestamp - *r.anchor_time);  // map reuse shows here
+  return o.str();
 }
 
 std::string frameJson(const PipelineRecords& records, const SystemOutput& output, std::size_t j, bool timings) {

@@ -218,4 +218,17 @@ double medianSceneDepth(const VisualMap& map, int keyframe) {
   return depths[depths.size() / 2];
 }
 
+std::optional<double> medianFirstSeen(const VisualMap& map, const std::vector<int>& points) {
+  std::vector<double> times;
+  for (const int id : points) {
+    if (id < 0) continue;
+    const PointLandmark& p = map.point(id);
+    if (p.bad || p.observations.empty()) continue;
+    times.push_back(map.keyframe(p.observations.front().keyframe).timestamp);
+  }
+  if (times.empty()) return std::nullopt;
+  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+  return times[times.size() / 2];
+}
+
 }  // namespace lvslam::visual

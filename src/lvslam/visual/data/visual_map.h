@@ -99,4 +99,9 @@ class VisualMap {
 // Median depth of the keyframe's point landmarks; 0 when it has none.
 double medianSceneDepth(const VisualMap& map, int keyframe);
 
+// Median time of the keyframes that first observed the given point
+// landmarks (ids < 0 and bad ones skipped): when the part of the map a pose
+// rests on was mapped. None without any.
+std::optional<double> medianFirstSeen(const VisualMap& map, const std::vector<int>& points);
+
 }  // namespace lvslam::visual

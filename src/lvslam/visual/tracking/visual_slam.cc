@@ -200,7 +200,10 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   result.keyframe = current_keyframe >= 0;
   result.T_new_old = map_correction;
   attachLidarPoses();
-  if (current_has_pose) result.pose_information = current.information;
+  if (current_has_pose && current.information) {
+    result.pose_information = current.information;
+    result.anchor_time = medianFirstSeen(map, current.point_landmark);
+  }
   result.T_world_odom = map.T_world_odom();
   return result;
 }

@@ -92,6 +92,9 @@ struct VisualFrameResult {
   // and the map's alignment with the LiDAR odometry (VisualMap::T_world_odom).
   std::optional<Matrix6d> pose_information;
   std::optional<Eigen::Isometry3d> T_world_odom;
+  // When the landmarks this pose rests on were mapped (medianFirstSeen of
+  // its inlier points); with a pose_information only.
+  std::optional<double> anchor_time;
 };
 
 class VisualSlam {
