@@ -47,14 +47,12 @@ std::optional<MotionDisagreement> frameDisagreement(const PipelineRecords& recor
 
 // The visual pose of a frame fused with the LiDAR's at its time, when both
 // are there (pose_fusion.h): T_odom_camera, the visual pose carried into the
-// odometry frame by its map's alignment.
-std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult& r, const LidarFrameRecord& l,
-                                                const Eigen::Isometry3d& T_lidar_camera, const PoseFusionConfig& c,
-                                                const OdometryPathLength& path) {
-  if (!r.pose_valid || !r.pose_information || !r.T_world_odom || !l.T_odom_lidar || !l.pose_reliable)
-    return std::nullopt;
+// odometry frame by its map's alignment; T_odom_camera_lidar, the LiDAR's.
+std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult& r, bool lidar_reliable,
+                                                const Eigen::Isometry3d& T_odom_camera_lidar,
+                                                const PoseFusionConfig& c, const OdometryPathLength& path) {
+  if (!r.pose_valid || !r.pose_information || !r.T_world_odom || !lidar_reliable) return std::nullopt;
   const Eigen::Isometry3d T_odom_camera_visual = r.T_world_odom->inverse() * r.T_world_camera;
-  const Eigen::Isometry3d T_odom_camera_lidar = *l.T_odom_lidar * T_lidar_camera;
   const Matrix6d H_visual = *r.pose_information / (c.visual_pixel_sigma * c.visual_pixel_sigma);
   const Matrix6d H_lidar = lidarPoseInformation(c, r.anchor_time ? path.since(*r.anchor_time) : 0.0);
   return fusePoses(T_odom_camera_visual.inverse(), H_visual, T_odom_camera_lidar.inverse(), H_lidar).inverse();
@@ -142,12 +140,13 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
     FrameOutput frame{v.t, std::nullopt, source, detection.lastProblem()};
     if (v.result.T_world_odom) out.T_world_map[v.result.map_id] = v.result.T_world_odom->inverse();
     if (l.T_odom_lidar) {  // none before the LiDAR's first pose
-      path.add(v.t, (*l.T_odom_lidar * T_lidar_camera).translation());
+      const Eigen::Isometry3d T_odom_camera_lidar = *l.T_odom_lidar * T_lidar_camera;
+      path.add(v.t, T_odom_camera_lidar.translation());
       std::optional<Eigen::Isometry3d> target;
       if (source == OutputSource::kVisual)
-        target = fusedWithLidar(v.result, l, T_lidar_camera, config.output_fusion, path);
+        target = fusedWithLidar(v.result, l.pose_reliable, T_odom_camera_lidar, config.output_fusion, path);
       frame.fused = target.has_value();
-      frame.T_world_camera = output.add(v.t, *l.T_odom_lidar * T_lidar_camera, target);
+      frame.T_world_camera = output.add(v.t, T_odom_camera_lidar, target);
     }
     out.frames.push_back(frame);
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
@@ -35,6 +36,14 @@ std::vector<Landmark*> indexById(std::map<int, Landmark>& landmarks) {
   for (auto& [id, landmark] : landmarks) by_id[static_cast<size_t>(id)] = &landmark;
   return by_id;
 }
+
+// The upper median (the element at size / 2 in order); none when empty.
+std::optional<double> upperMedian(std::vector<double> values) {
+  if (values.empty()) return std::nullopt;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 }  // namespace
 
 VisualMap::VisualMap(const VisualMap& other)
@@ -213,9 +222,7 @@ double medianSceneDepth(const VisualMap& map, int keyframe) {
   for (const int p : k.point_landmark) {
     if (p >= 0 && !map.point(p).bad) depths.push_back((k.T_camera_world * map.point(p).p_world).z());
   }
-  if (depths.empty()) return 0.0;
-  std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
-  return depths[depths.size() / 2];
+  return upperMedian(std::move(depths)).value_or(0.0);
 }
 
 std::optional<double> medianFirstSeen(const VisualMap& map, const std::vector<int>& points) {
@@ -226,9 +233,7 @@ std::optional<double> medianFirstSeen(const VisualMap& map, const std::vector<in
     if (p.bad || p.observations.empty()) continue;
     times.push_back(map.keyframe(p.observations.front().keyframe).timestamp);
   }
-  if (times.empty()) return std::nullopt;
-  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-  return times[times.size() / 2];
+  return upperMedian(std::move(times));
 }
 
 }  // namespace lvslam::visual

@@ -13,13 +13,14 @@ namespace lvslam::visual {
 
 namespace {
 
-// The graph's nodes: the window's keyframes first (free), then the held ones.
+// The graph's nodes: the window's keyframes first (free), then the held
+// ones; and its edges once per pair of node indices.
 struct CorrectionGraph {
   std::vector<int> ids;
   std::unordered_map<int, int> index;
   std::vector<PoseGraphNode> nodes;
   int free = 0;
-  int predecessor = -1;  // node of the keyframe before the window, if any
+  std::set<std::pair<int, int>> pairs;
 
   void add(const VisualMap& map, int id, bool held) {
     index[id] = static_cast<int>(ids.size());
@@ -31,7 +32,9 @@ struct CorrectionGraph {
   }
 };
 
-CorrectionGraph buildNodes(const VisualMap& map, const MapCorrectionConfig& config) {
+// Edges: covisible keyframes and, so the graph is connected, consecutive
+// ones (the held predecessor to the window's first).
+CorrectionGraph buildGraph(const VisualMap& map, const MapCorrectionConfig& config) {
   CorrectionGraph g;
   const auto& keyframes = map.keyframes();
   const auto size = static_cast<std::ptrdiff_t>(keyframes.size());
@@ -41,32 +44,25 @@ CorrectionGraph buildNodes(const VisualMap& map, const MapCorrectionConfig& conf
   for (auto it = first_free; it != keyframes.end(); ++it) g.add(map, it->first, false);
   // Held: the keyframe before the window (the chain goes on) and older ones sharing landmarks with it.
   if (first_free != keyframes.begin()) {
-    g.predecessor = static_cast<int>(g.ids.size());
+    g.pairs.insert({0, g.free});  // the predecessor's node index
     g.add(map, std::prev(first_free)->first, true);
   }
   for (int i = 0; i < g.free; ++i) {
-    for (const int other : map.covisibility().neighbours(g.ids[i], config.min_covisibility))
-      if (!g.index.count(other) && map.hasKeyframe(other)) g.add(map, other, true);
+    if (i > 0) g.pairs.insert({i - 1, i});
+    for (const int other : map.covisibility().neighbours(g.ids[i], config.min_covisibility)) {
+      if (!map.hasKeyframe(other)) continue;
+      if (!g.index.count(other)) g.add(map, other, true);
+      const int j = g.index.at(other);
+      g.pairs.insert({std::min(i, j), std::max(i, j)});
+    }
   }
   return g;
 }
 
-// Edges once per pair: covisible keyframes and, so the graph is connected,
-// consecutive ones (the held predecessor to the window's first).
-std::vector<PoseGraphEdge> buildEdges(const VisualMap& map, const CorrectionGraph& g, int min_covisibility) {
-  std::set<std::pair<int, int>> pairs;
-  for (int i = 0; i < g.free; ++i) {
-    if (i > 0) pairs.insert({i - 1, i});
-    for (const int other : map.covisibility().neighbours(g.ids[i], min_covisibility)) {
-      const auto it = g.index.find(other);
-      if (it == g.index.end()) continue;
-      pairs.insert({std::min(i, it->second), std::max(i, it->second)});
-    }
-  }
-  if (g.predecessor >= 0 && g.free > 0) pairs.insert({0, g.predecessor});
+std::vector<PoseGraphEdge> edgesOf(const CorrectionGraph& g) {
   std::vector<PoseGraphEdge> edges;
-  edges.reserve(pairs.size());
-  for (const auto& [a, b] : pairs)
+  edges.reserve(g.pairs.size());
+  for (const auto& [a, b] : g.pairs)
     edges.push_back({a, b, g.nodes[a].T_camera_world * g.nodes[b].T_camera_world.inverse()});
   return edges;
 }
@@ -103,11 +99,11 @@ void moveLandmarks(VisualMap& map, const std::vector<int>& window, const MapCorr
 
 MapCorrectionResult correctMapWithOdometry(VisualMap& map, const MapCorrectionConfig& config) {
   MapCorrectionResult result;
-  CorrectionGraph g = buildNodes(map, config);
+  CorrectionGraph g = buildGraph(map, config);
   result.keyframes = g.free;
   result.held_keyframes = static_cast<int>(g.ids.size()) - g.free;
   if (g.ids.size() < 2) return result;
-  const std::vector<PoseGraphEdge> edges = buildEdges(map, g, config.min_covisibility);
+  const std::vector<PoseGraphEdge> edges = edgesOf(g);
   result.graph = optimizePoseGraph(g.nodes, edges, config.graph);
   if (!result.graph.solved) return result;
 
