@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -70,9 +71,20 @@ TEST(SimulatedFolder, FollowsTheSequenceFormatWithUnsynchronisedUnixTimes) {
   EXPECT_NEAR(reader.cameraFiles()[1].t - camera_start, 1.0 / 15.0, 1e-6);
   EXPECT_NEAR(reader.lidarFiles()[1].t - lidar_start, 0.1, 1e-6);
   EXPECT_EQ(reader.info().groundtruth_frame, GroundTruthFrame::kCamera);
-  // Ground truth at 200 Hz is the renderer's own camera pose.
+  // Ground truth at 200 Hz and at every image and scan time is the renderer's
+  // own camera pose: 61 grid poses over 0.3 s plus 5 image and 2 scan times
+  // (none on the grid: the streams start 12.7 and 51.9 ms in).
   const Trajectory gt = readTum(dir.file("groundtruth.txt"));
-  ASSERT_EQ(gt.size(), 61u);
+  ASSERT_EQ(gt.size(), 61u + 5u + 2u);
+  EXPECT_EQ(summary.groundtruth_poses, 68);
+  for (std::size_t i = 1; i < gt.size(); ++i) EXPECT_GT(gt[i].t, gt[i - 1].t);
+  // Each sensor time has a ground-truth pose at exactly its time stamp (as
+  // the TUM files write both), so evaluation compares at the image's time.
+  const auto hasPoseAt = [&](double t) {
+    return std::any_of(gt.begin(), gt.end(), [&](const StampedPose& p) { return std::abs(p.t - t) < 1e-9; });
+  };
+  for (const auto& image : reader.cameraFiles()) EXPECT_TRUE(hasPoseAt(image.t)) << image.t;
+  for (const auto& scan : reader.lidarFiles()) EXPECT_TRUE(hasPoseAt(scan.t)) << scan.t;
   const Scenario scenario = makeScenario(shortRoom(1));
   for (const StampedPose& pose : gt) {
     const Eigen::Isometry3d truth = scenario.T_world_camera(pose.t - 1700000000.0);

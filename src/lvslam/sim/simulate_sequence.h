@@ -34,6 +34,7 @@ bool simulateSequenceOnce(const SimOptions& options, const std::string& out_dir,
 Eigen::Isometry3d perturbExtrinsics(const Eigen::Isometry3d& T_camera_lidar, const ExtrinsicError& error,
                                     std::uint64_t seed);
 
+// groundtruth.txt: poses on this grid and at every image and scan time.
 inline constexpr double kGroundTruthRateHz = 200.0;
 inline constexpr const char* kExtrinsicsTruthFile = "extrinsics_truth.yaml";
 
