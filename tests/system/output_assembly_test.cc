@@ -410,6 +410,9 @@ TEST(AssembleOutput, OutputFusionTakesEachDirectionFromWhoKnowsItAndStepsAcrossS
   }
   SystemConfig config = configFor(RunMode::kFused);
   config.detection.frames_to_recover = 5;
+  // The Gaussian product alone: vision's error, fixed in the camera, turns
+  // in the odometry frame, which the high-pass (tested below) would pass in part.
+  config.output_fusion.high_pass.gain = 0.0;
   ASSERT_TRUE(config.output_fusion.enabled);
   const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
   ASSERT_EQ(out.frames.size(), 50u);
@@ -453,6 +456,56 @@ TEST(AssembleOutput, OutputFusionWithoutTheInformationFollowsTheLidar) {
   for (std::size_t j = 0; j < out.frames.size(); ++j) {
     EXPECT_FALSE(out.frames[j].fused) << j;
     EXPECT_LT(translationDiff(*out.frames[j].T_world_camera, kTOdomWorld * trueCamera(frameTime(j))), 1e-9) << j;
+  }
+}
+
+// The LiDAR's camera jitters by +-2 mm frame to frame, vision is exact but
+// carries no information (so the Gaussian product keeps the LiDAR's pose):
+// the visual high-pass takes a share of vision's fast motion, so the output's
+// jitter shrinks to about (1 - gain) of the LiDAR's, and without it is the
+// LiDAR's own.
+TEST(AssembleOutput, TheHighPassTakesAShareOfVisionsFastMotion) {
+  FusedScenario s = blackoutScenario(20);
+  const auto jitter = [](std::size_t j) { return Eigen::Vector3d(0.0, 0.0, j % 2 == 0 ? 0.002 : -0.002); };
+  for (std::size_t j = 0; j < s.records.visual.size(); ++j) {
+    const double t = frameTime(j);
+    visual::VisualFrameResult& r = s.records.visual[j].result;
+    r.pose_information.reset();
+    if (r.pose_valid) {
+      const Eigen::Isometry3d& T_map_world = r.map_id == 0 ? kTMap0World : kTMap1World;
+      r.T_world_camera = T_map_world * trueCamera(t);
+      r.T_world_odom = T_map_world * kTOdomWorld.inverse();
+    }
+    Eigen::Isometry3d T_odom_camera = kTOdomWorld * trueCamera(t);
+    T_odom_camera.translation() += jitter(j);
+    s.records.lidar[j] = lidarRecord(t, T_odom_camera * kTCameraLidar);
+    s.records.lidar[j].pose_reliable = true;
+  }
+  SystemConfig config = configFor(RunMode::kFused);
+  config.detection.frames_to_recover = 2;
+  config.detection.max_disagreement_m = 0.01;  // the jitter is a 4 mm step each frame
+  const double gain = config.output_fusion.high_pass.gain;
+  ASSERT_GT(gain, 0.0);
+  for (const bool on : {true, false}) {
+    config.output_fusion.high_pass.gain = on ? gain : 0.0;
+    const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
+    int checked = 0;
+    for (std::size_t j = 1; j < out.frames.size(); ++j) {
+      // Frames whose high-pass window holds more than the frame itself.
+      if (out.frames[j].source != OutputSource::kVisual || out.frames[j - 1].source != OutputSource::kVisual) continue;
+      const Eigen::Vector3d error =
+          out.frames[j].T_world_camera->translation() - (kTOdomWorld * trueCamera(frameTime(j))).translation();
+      const double share = error.z() / jitter(j).z();
+      if (on) {
+        EXPECT_LT(share, 1.0 - 0.5 * gain) << j;
+        EXPECT_GT(share, 1.0 - gain) << j;
+      } else {
+        EXPECT_NEAR(share, 1.0, 1e-6) << j;
+      }
+      EXPECT_LT(std::abs(error.x()) + std::abs(error.y()), 1e-6) << j;
+      ++checked;
+    }
+    EXPECT_GE(checked, 5);
   }
 }
 

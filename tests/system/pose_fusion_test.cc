@@ -101,11 +101,11 @@ TEST(FusedOutputTrajectory, TheCorrectionComesAndGoesByBoundedSteps) {
     return makePose(expSO3(Eigen::Vector3d(0.0, 0.0, 0.02 * j)), Eigen::Vector3d(0.03 * j, 0.01 * j, 0.0));
   };
   const Eigen::Isometry3d offset = makePose(expSO3(Eigen::Vector3d(0.0, 0.003, 0.0)), Eigen::Vector3d(0.009, 0, 0));
-  EXPECT_TRUE(out.add(0.0, lidar(0), std::nullopt).isApprox(lidar(0), 1e-12));
+  EXPECT_TRUE(out.add(lidar(0), std::nullopt).isApprox(lidar(0), 1e-12));
   Eigen::Isometry3d previous_correction = Eigen::Isometry3d::Identity();
   for (int j = 1; j < 30; ++j) {
     const bool vision = j < 15;
-    const Eigen::Isometry3d T = out.add(0.1 * j, lidar(j), vision ? std::optional(lidar(j) * offset) : std::nullopt);
+    const Eigen::Isometry3d T = out.add(lidar(j), vision ? std::optional(lidar(j) * offset) : std::nullopt);
     const Eigen::Isometry3d correction = lidar(j).inverse() * T;
     const Eigen::Isometry3d change = previous_correction.inverse() * correction;
     EXPECT_LT(change.translation().norm(), max_m + 1e-12) << j;
@@ -119,7 +119,6 @@ TEST(FusedOutputTrajectory, TheCorrectionComesAndGoesByBoundedSteps) {
       EXPECT_TRUE(T.isApprox(lidar(j), 1e-9)) << j;
     }
   }
-  EXPECT_EQ(out.trajectory().size(), 30u);
 }
 
 }  // namespace

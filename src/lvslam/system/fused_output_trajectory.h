@@ -11,7 +11,6 @@
 
 #include <Eigen/Geometry>
 
-#include "lvslam/core/trajectory.h"
 
 namespace lvslam::system {
 
@@ -21,18 +20,14 @@ class FusedOutputTrajectory {
   FusedOutputTrajectory(double max_step_m, double max_step_deg)
       : max_step_m_(max_step_m), max_step_rad_(max_step_deg * M_PI / 180.0) {}
 
-  // Appends and returns the output pose at t: T_odom_camera_lidar moved
-  // toward `target` (none: toward the LiDAR pose itself).
-  Eigen::Isometry3d add(double t, const Eigen::Isometry3d& T_odom_camera_lidar,
-                        const std::optional<Eigen::Isometry3d>& target);
-
-  const Trajectory& trajectory() const { return trajectory_; }
+  // The output pose of the next frame: T_odom_camera_lidar moved toward
+  // `target` (none: toward the LiDAR pose itself).
+  Eigen::Isometry3d add(const Eigen::Isometry3d& T_odom_camera_lidar, const std::optional<Eigen::Isometry3d>& target);
 
  private:
   double max_step_m_, max_step_rad_;
   // The correction: the output's camera in the LiDAR's camera.
   Eigen::Isometry3d T_lidar_output_ = Eigen::Isometry3d::Identity();
-  Trajectory trajectory_;
 };
 
 }  // namespace lvslam::system

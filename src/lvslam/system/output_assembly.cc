@@ -6,6 +6,7 @@
 #include "lvslam/system/odometry_path_length.h"
 #include "lvslam/system/output_trajectory.h"
 #include "lvslam/system/pose_fusion.h"
+#include "lvslam/system/visual_high_pass.h"
 
 namespace lvslam::system {
 
@@ -56,6 +57,13 @@ std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult&
   const Matrix6d H_visual = *r.pose_information / (c.visual_pixel_sigma * c.visual_pixel_sigma);
   const Matrix6d H_lidar = lidarPoseInformation(c, r.anchor_time ? path.since(*r.anchor_time) : 0.0);
   return fusePoses(T_odom_camera_visual.inverse(), H_visual, T_odom_camera_lidar.inverse(), H_lidar).inverse();
+}
+
+// The visual camera centre in the odometry frame, when the output may use it
+// (the conditions of fusedWithLidar).
+std::optional<Eigen::Vector3d> visualCentre(const visual::VisualFrameResult& r, bool lidar_reliable) {
+  if (!r.pose_valid || !r.T_world_odom || !lidar_reliable) return std::nullopt;
+  return (r.T_world_odom->inverse() * r.T_world_camera).translation();
 }
 
 void lidarOutput(const PipelineRecords& records, const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
@@ -132,6 +140,7 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
                       const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
   DetectionModule detection(config.detection);
   FusedOutputTrajectory output(config.output_fusion.max_step_m, config.output_fusion.max_step_deg);
+  VisualHighPass high_pass(config.output_fusion.high_pass);
   OdometryPathLength path;
   for (std::size_t j = 0; j < records.visual.size(); ++j) {
     const VisualFrameRecord& v = records.visual[j];
@@ -143,14 +152,21 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
       const Eigen::Isometry3d T_odom_camera_lidar = *l.T_odom_lidar * T_lidar_camera;
       path.add(v.t, T_odom_camera_lidar.translation());
       std::optional<Eigen::Isometry3d> target;
-      if (source == OutputSource::kVisual)
+      std::optional<Eigen::Vector3d> centre;
+      if (source == OutputSource::kVisual) {
         target = fusedWithLidar(v.result, l.pose_reliable, T_odom_camera_lidar, config.output_fusion, path);
+        centre = visualCentre(v.result, l.pose_reliable);
+      }
       frame.fused = target.has_value();
-      frame.T_world_camera = output.add(v.t, T_odom_camera_lidar, target);
+      Eigen::Isometry3d T_odom_camera = output.add(T_odom_camera_lidar, target);
+      const std::optional<Eigen::Vector3d> difference =
+          centre ? std::optional<Eigen::Vector3d>(*centre - T_odom_camera.translation()) : std::nullopt;
+      T_odom_camera.translation() += high_pass.add(v.t, v.result.map_id, difference);
+      frame.T_world_camera = T_odom_camera;
+      out.trajectory.push_back({v.t, T_odom_camera});
     }
     out.frames.push_back(frame);
   }
-  out.trajectory = output.trajectory();
   out.switches = detection.switches();
 }
 

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "lvslam/core/se3.h"
+#include "lvslam/system/visual_high_pass.h"
 
 namespace lvslam::system {
 
@@ -37,6 +38,8 @@ struct PoseFusionConfig {
   // per frame (fused_output_trajectory.h).
   double max_step_m = 0.002;
   double max_step_deg = 0.05;
+  // Then a share of vision's fast motion (visual_high_pass.h).
+  VisualHighPassConfig high_pass;
 };
 
 // Information of a pose with isotropic camera-centre and rotation noise, for
