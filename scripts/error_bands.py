@@ -48,8 +48,8 @@ def umeyama_se3(src, dst):
     return r, mu_d - r @ mu_s
 
 
-def aligned_error(t_gt, p_gt, t, p):
-    g = interpolate(t_gt, p_gt, t)
+def aligned_error(p, g):
+    """Error of positions p against the truth g at the same times, after SE3 alignment."""
     r, trans = umeyama_se3(p, g)
     return p @ r.T + trans - g
 
@@ -82,7 +82,7 @@ def bands_table(gt_path, paths):
         t, p = load_tum(path)
         inside = (t >= t_gt[0]) & (t <= t_gt[-1])
         t, p = t[inside], p[inside]
-        err = aligned_error(t_gt, p_gt, t, p)
+        err = aligned_error(p, interpolate(t_gt, p_gt, t))
         bands = band_rms(t, err, 1.0 / np.median(np.diff(t)))
         cells = "".join(" | " + " ".join(f"{v * 1000:.2f}" for v in b) for b in bands)
         print(f"{path} | {np.linalg.norm(err, axis=1).mean() * 1000:.2f}{cells}")
@@ -112,7 +112,7 @@ def fusion_bound(gt_path, first_path, second_path):
     fused = np.fft.irfft(combined, n=len(common), axis=0) + mean + g
 
     def ate(p):
-        return np.linalg.norm(aligned_error(common, g, common, p), axis=1).mean() * 1000
+        return np.linalg.norm(aligned_error(p, g), axis=1).mean() * 1000
 
     ate_a, ate_b, ate_f = ate(a), ate(b), ate(fused)
     print(f"{len(common)} frames in both; ATE mean: {first_path} {ate_a:.2f} mm, {second_path} "

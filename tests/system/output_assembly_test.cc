@@ -219,6 +219,7 @@ struct FusedScenario {
 // Healthy vision in map 0, a blackout, then a new map 1; the LiDAR is exact throughout.
 const Eigen::Isometry3d kTMap0World = expSE3((Vector6d() << 1, 2, 3, 0.1, 0.2, 0.3).finished());
 const Eigen::Isometry3d kTMap1World = expSE3((Vector6d() << -4, 0, 1, 0.5, -0.2, 0.0).finished());
+const Eigen::Isometry3d& mapWorld(int map_id) { return map_id == 0 ? kTMap0World : kTMap1World; }
 
 FusedScenario blackoutScenario(std::size_t frames) {
   FusedScenario s;
@@ -400,7 +401,7 @@ TEST(AssembleOutput, OutputFusionTakesEachDirectionFromWhoKnowsItAndStepsAcrossS
     const double t = frameTime(j);
     visual::VisualFrameResult& r = s.records.visual[j].result;
     if (r.pose_valid) {
-      const Eigen::Isometry3d& T_map_world = r.map_id == 0 ? kTMap0World : kTMap1World;
+      const Eigen::Isometry3d& T_map_world = mapWorld(r.map_id);
       r.T_world_camera = T_map_world * trueCamera(t) * visual_error;
       r.pose_information = H_visual;
       r.T_world_odom = T_map_world * kTOdomWorld.inverse();
@@ -472,7 +473,7 @@ TEST(AssembleOutput, TheHighPassTakesAShareOfVisionsFastMotion) {
     visual::VisualFrameResult& r = s.records.visual[j].result;
     r.pose_information.reset();
     if (r.pose_valid) {
-      const Eigen::Isometry3d& T_map_world = r.map_id == 0 ? kTMap0World : kTMap1World;
+      const Eigen::Isometry3d& T_map_world = mapWorld(r.map_id);
       r.T_world_camera = T_map_world * trueCamera(t);
       r.T_world_odom = T_map_world * kTOdomWorld.inverse();
     }

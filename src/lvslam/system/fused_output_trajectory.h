@@ -11,7 +11,6 @@
 
 #include <Eigen/Geometry>
 
-
 namespace lvslam::system {
 
 class FusedOutputTrajectory {

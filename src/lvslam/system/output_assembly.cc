@@ -46,24 +46,24 @@ std::optional<MotionDisagreement> frameDisagreement(const PipelineRecords& recor
   return disagreement(records.visual[j - 1], records.visual[j], records.lidar[j - 1], records.lidar[j], T_lidar_camera);
 }
 
-// The visual pose of a frame fused with the LiDAR's at its time, when both
-// are there (pose_fusion.h): T_odom_camera, the visual pose carried into the
-// odometry frame by its map's alignment; T_odom_camera_lidar, the LiDAR's.
-std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult& r, bool lidar_reliable,
+// The visual pose carried into the odometry frame by its map's alignment,
+// when the output may use it: a valid pose of an aligned map, and a LiDAR
+// pose to rest on.
+std::optional<Eigen::Isometry3d> visualInOdom(const visual::VisualFrameResult& r, bool lidar_reliable) {
+  if (!r.pose_valid || !r.T_world_odom || !lidar_reliable) return std::nullopt;
+  return r.T_world_odom->inverse() * r.T_world_camera;
+}
+
+// The visual pose of a frame fused with the LiDAR's at its time, when the
+// tracker gave its information (pose_fusion.h); both in the odometry frame.
+std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult& r,
+                                                const Eigen::Isometry3d& T_odom_camera_visual,
                                                 const Eigen::Isometry3d& T_odom_camera_lidar,
                                                 const PoseFusionConfig& c, const OdometryPathLength& path) {
-  if (!r.pose_valid || !r.pose_information || !r.T_world_odom || !lidar_reliable) return std::nullopt;
-  const Eigen::Isometry3d T_odom_camera_visual = r.T_world_odom->inverse() * r.T_world_camera;
+  if (!r.pose_information) return std::nullopt;
   const Matrix6d H_visual = *r.pose_information / (c.visual_pixel_sigma * c.visual_pixel_sigma);
   const Matrix6d H_lidar = lidarPoseInformation(c, r.anchor_time ? path.since(*r.anchor_time) : 0.0);
   return fusePoses(T_odom_camera_visual.inverse(), H_visual, T_odom_camera_lidar.inverse(), H_lidar).inverse();
-}
-
-// The visual camera centre in the odometry frame, when the output may use it
-// (the conditions of fusedWithLidar).
-std::optional<Eigen::Vector3d> visualCentre(const visual::VisualFrameResult& r, bool lidar_reliable) {
-  if (!r.pose_valid || !r.T_world_odom || !lidar_reliable) return std::nullopt;
-  return (r.T_world_odom->inverse() * r.T_world_camera).translation();
 }
 
 void lidarOutput(const PipelineRecords& records, const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
@@ -151,16 +151,13 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
     if (l.T_odom_lidar) {  // none before the LiDAR's first pose
       const Eigen::Isometry3d T_odom_camera_lidar = *l.T_odom_lidar * T_lidar_camera;
       path.add(v.t, T_odom_camera_lidar.translation());
-      std::optional<Eigen::Isometry3d> target;
-      std::optional<Eigen::Vector3d> centre;
-      if (source == OutputSource::kVisual) {
-        target = fusedWithLidar(v.result, l.pose_reliable, T_odom_camera_lidar, config.output_fusion, path);
-        centre = visualCentre(v.result, l.pose_reliable);
-      }
+      std::optional<Eigen::Isometry3d> visual, target;
+      if (source == OutputSource::kVisual) visual = visualInOdom(v.result, l.pose_reliable);
+      if (visual) target = fusedWithLidar(v.result, *visual, T_odom_camera_lidar, config.output_fusion, path);
       frame.fused = target.has_value();
       Eigen::Isometry3d T_odom_camera = output.add(T_odom_camera_lidar, target);
-      const std::optional<Eigen::Vector3d> difference =
-          centre ? std::optional<Eigen::Vector3d>(*centre - T_odom_camera.translation()) : std::nullopt;
+      std::optional<Eigen::Vector3d> difference;
+      if (visual) difference = visual->translation() - T_odom_camera.translation();
       T_odom_camera.translation() += high_pass.add(v.t, v.result.map_id, difference);
       frame.T_world_camera = T_odom_camera;
       out.trajectory.push_back({v.t, T_odom_camera});
