@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "lvslam/system/fused_output_trajectory.h"
+#include "lvslam/system/output_correction.h"
 
 namespace lvslam::system {
 namespace {
@@ -94,9 +94,9 @@ TEST(PoseFusion, LidarInformationShrinksWithThePathSinceTheAnchor) {
 // The output follows the LiDAR exactly without a target, reaches a target
 // by bounded steps, and returns to the LiDAR by bounded steps when the
 // target goes (vision leaves).
-TEST(FusedOutputTrajectory, TheCorrectionComesAndGoesByBoundedSteps) {
+TEST(OutputCorrection, TheCorrectionComesAndGoesByBoundedSteps) {
   const double max_m = 0.002, max_deg = 0.05;
-  FusedOutputTrajectory out(max_m, max_deg);
+  OutputCorrection out(max_m, max_deg);
   const auto lidar = [](int j) {
     return makePose(expSO3(Eigen::Vector3d(0.0, 0.0, 0.02 * j)), Eigen::Vector3d(0.03 * j, 0.01 * j, 0.0));
   };

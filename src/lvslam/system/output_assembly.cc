@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "lvslam/system/fused_output_trajectory.h"
+#include "lvslam/system/output_correction.h"
 #include "lvslam/system/odometry_path_length.h"
 #include "lvslam/system/output_trajectory.h"
 #include "lvslam/system/pose_fusion.h"
@@ -139,7 +139,7 @@ void visualFirstOutput(const PipelineRecords& records, const SystemConfig& confi
 void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config,
                       const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
   DetectionModule detection(config.detection);
-  FusedOutputTrajectory output(config.output_fusion.max_step_m, config.output_fusion.max_step_deg);
+  OutputCorrection correction(config.output_fusion.max_step_m, config.output_fusion.max_step_deg);
   VisualHighPass high_pass(config.output_fusion.high_pass);
   OdometryPathLength path;
   for (std::size_t j = 0; j < records.visual.size(); ++j) {
@@ -155,7 +155,7 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
       if (source == OutputSource::kVisual) visual = visualInOdom(v.result, l.pose_reliable);
       if (visual) target = fusedWithLidar(v.result, *visual, T_odom_camera_lidar, config.output_fusion, path);
       frame.fused = target.has_value();
-      Eigen::Isometry3d T_odom_camera = output.add(T_odom_camera_lidar, target);
+      Eigen::Isometry3d T_odom_camera = correction.add(T_odom_camera_lidar, target);
       std::optional<Eigen::Vector3d> difference;
       if (visual) difference = visual->translation() - T_odom_camera.translation();
       T_odom_camera.translation() += high_pass.add(v.t, v.result.map_id, difference);

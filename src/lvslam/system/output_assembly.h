@@ -3,7 +3,7 @@
 // in time order (each decision uses only that frame and earlier ones, as an
 // online system would): the detection module decides whether vision is
 // trusted. Fused mode with output fusion: the LiDAR pose, corrected toward
-// the visual and LiDAR poses' fusion while it is (FusedOutputTrajectory);
+// the visual and LiDAR poses' fusion while it is (OutputCorrection);
 // the paper's output and visual mode: OutputTrajectory keeps the chosen
 // odometry continuous across switches.
 #include <map>

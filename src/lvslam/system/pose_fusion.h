@@ -35,7 +35,7 @@ struct PoseFusionConfig {
   // among 1, 3, 6 and 10 (docs/benchmarks.md, "Output fusion").
   double visual_pixel_sigma = 10.0;
   // The output's correction of the LiDAR pose changes by at most this much
-  // per frame (fused_output_trajectory.h).
+  // per frame (output_correction.h).
   double max_step_m = 0.002;
   double max_step_deg = 0.05;
   // Then a share of vision's fast motion (visual_high_pass.h).

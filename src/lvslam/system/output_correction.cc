@@ -1,10 +1,10 @@
-#include "lvslam/system/fused_output_trajectory.h"
+#include "lvslam/system/output_correction.h"
 
 #include "lvslam/core/se3.h"
 
 namespace lvslam::system {
 
-Eigen::Isometry3d FusedOutputTrajectory::add(const Eigen::Isometry3d& T_odom_camera_lidar,
+Eigen::Isometry3d OutputCorrection::add(const Eigen::Isometry3d& T_odom_camera_lidar,
                                              const std::optional<Eigen::Isometry3d>& target) {
   const Eigen::Isometry3d T_wanted =
       target ? T_odom_camera_lidar.inverse() * *target : Eigen::Isometry3d::Identity();

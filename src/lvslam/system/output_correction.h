@@ -1,6 +1,6 @@
 #pragma once
-// The output of fused mode with output fusion on: the LiDAR odometry's
-// camera pose at every camera time, corrected toward the fused pose
+// The correction that makes fused mode's output (with output fusion on): the
+// LiDAR odometry's camera pose at every camera time, moved toward the fused pose
 // (pose_fusion.h) while the detection module trusts vision. The correction
 // lives in the camera frame and changes by bounded steps per frame, so the
 // output has no jump when vision joins or leaves; the LiDAR odometry itself
@@ -13,10 +13,10 @@
 
 namespace lvslam::system {
 
-class FusedOutputTrajectory {
+class OutputCorrection {
  public:
   // The correction changes by at most max_m and max_deg per frame.
-  FusedOutputTrajectory(double max_step_m, double max_step_deg)
+  OutputCorrection(double max_step_m, double max_step_deg)
       : max_step_m_(max_step_m), max_step_rad_(max_step_deg * M_PI / 180.0) {}
 
   // The output pose of the next frame: T_odom_camera_lidar moved toward
