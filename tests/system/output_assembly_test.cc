@@ -175,6 +175,34 @@ TEST(AssembleOutput, VisualModeAnchorsTheSecondMapAtTheLastPoseOfTheFirst) {
   for (std::size_t i = 1; i < out.trajectory.size(); ++i) EXPECT_LT(out.trajectory[i - 1].t, out.trajectory[i].t);
 }
 
+// Frames placed on their final keyframes (final_visual_poses.h) are what the
+// output and the visual subsystem's own trajectory hold, unless the
+// configuration asks for the poses as tracked.
+TEST(AssembleOutput, VisualPosesOnTheFinalKeyframesWhenAsked) {
+  PipelineRecords records = twoVisualMaps(Eigen::Isometry3d::Identity(), Eigen::Isometry3d::Identity(), true);
+  const auto shifted = [](std::size_t j) { return expSE3((Vector6d() << 0.01 * j, 0.02, -0.01, 0.001 * j, 0, 0).finished()); };
+  for (std::size_t j = 5; j < 15; ++j) records.visual[j].T_world_camera_final = trueCamera(frameTime(j)) * shifted(j);
+  records.visual[5].initial_reference_final = trueCamera(frameTime(0)) * shifted(0);
+  for (const bool final_poses : {true, false}) {
+    SystemConfig config = configFor(RunMode::kVisual);
+    config.final_map_poses = final_poses;
+    const SystemOutput out = assembleOutput(records, config, kTCameraLidar);
+    for (std::size_t j : {0, 5, 9, 14}) {
+      const Eigen::Isometry3d expected = trueCamera(frameTime(j)) * (final_poses ? shifted(j) : Eigen::Isometry3d::Identity());
+      ASSERT_TRUE(out.frames[j].T_world_camera) << j;
+      EXPECT_TRUE(out.frames[j].T_world_camera->isApprox(expected, 1e-12)) << j << " final " << final_poses;
+    }
+    const Trajectory& own = out.visual_maps.at(0);
+    ASSERT_EQ(own.size(), 11u);  // first view + 10 tracked
+    EXPECT_TRUE(own[0].T_world_frame.isApprox(final_poses ? *records.visual[5].initial_reference_final
+                                                          : records.visual[5].result.initial_reference->T_world_frame,
+                                              1e-12));
+    EXPECT_TRUE(own[4].T_world_frame.isApprox(final_poses ? *records.visual[8].T_world_camera_final
+                                                          : records.visual[8].result.T_world_camera,
+                                              1e-12));
+  }
+}
+
 // The lines of an earlier map stay in lines.ply, each map's lines moved
 // into the output world with that map's own anchor.
 TEST(AssembleOutput, LinesOfEveryVisualMapAreMovedWithTheirMapsAnchor) {

@@ -21,6 +21,7 @@ TEST(SystemConfig, EmptyFileKeepsEveryDefault) {
   EXPECT_EQ(c.lidar.preprocess.voxel_size, d.lidar.preprocess.voxel_size);
   EXPECT_EQ(c.fusion.arc_step_deg, d.fusion.arc_step_deg);
   EXPECT_EQ(c.map_voxel, d.map_voxel);
+  EXPECT_TRUE(c.final_map_poses);
 }
 
 TEST(SystemConfig, ReadsEverySection) {
@@ -51,7 +52,9 @@ TEST(SystemConfig, ReadsEverySection) {
       "  depth_hint_max_dt: 0.04\n"
       "  keypoint_depth_max_dt: 0.07\n"
       "  keypoint_depth_source: features\n"
-      "  map_voxel: 0.3\n");
+      "  map_voxel: 0.3\n"
+      "  final_map_poses: false\n");
+  EXPECT_FALSE(c.final_map_poses);
   EXPECT_DOUBLE_EQ(c.lidar.preprocess.voxel_size, 0.4);
   EXPECT_EQ(c.visual.visual.features.orb.max_features, 543);
   EXPECT_DOUBLE_EQ(c.fusion.arc_step_deg, 0.35);

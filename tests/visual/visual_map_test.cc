@@ -160,6 +160,52 @@ TEST(VisualMap, MedianFirstSeenTakesEachLandmarksFirstObserver) {
   EXPECT_DOUBLE_EQ(*medianFirstSeen(map, {points[0], points[1], points[2], points[3]}), 20.0);
 }
 
+// A removed keyframe keeps its pose relative to its most covisible keyframe
+// (else the nearest older one) and follows it when it moves; chains of
+// removals resolve through each parent in turn.
+TEST(VisualMap, RemovedKeyframesFollowTheirParents) {
+  VisualMap map;
+  std::vector<int> ids;
+  for (int i = 0; i < 4; ++i) {
+    Keyframe kf = keyframeWith(4, 0);
+    kf.T_camera_world = expSE3((Vector6d() << 0.1 * i, -0.05 * i, 0.3 * i, 0.01 * i, 0.02, -0.03 * i).finished());
+    ids.push_back(map.addKeyframe(std::move(kf)));
+  }
+  // ids[2] shares two points with ids[3] and one with ids[1]: its parent is ids[3].
+  for (int i = 0; i < 2; ++i) {
+    const int p = map.addPointLandmark(Eigen::Vector3d(i, 1, 5), cv::Mat());
+    map.addPointObservation(p, ids[2], i);
+    map.addPointObservation(p, ids[3], i);
+  }
+  const int shared = map.addPointLandmark(Eigen::Vector3d(0, 2, 5), cv::Mat());
+  map.addPointObservation(shared, ids[2], 2);
+  map.addPointObservation(shared, ids[1], 2);
+  const Eigen::Isometry3d T2 = map.keyframe(ids[2]).T_camera_world, T3 = map.keyframe(ids[3]).T_camera_world;
+  const Eigen::Isometry3d T1 = map.keyframe(ids[1]).T_camera_world;
+  map.removeKeyframe(ids[2]);
+  EXPECT_FALSE(map.hasKeyframe(ids[2]));
+  ASSERT_TRUE(map.keyframePose(ids[2]).has_value());
+  EXPECT_TRUE(map.keyframePose(ids[2])->isApprox(T2, 1e-12));
+  // BA moves the parent: the removed keyframe moves with it, rigidly.
+  const Eigen::Isometry3d move = expSE3((Vector6d() << 0.2, 0.0, -0.1, 0.0, 0.05, 0.0).finished());
+  map.keyframe(ids[3]).T_camera_world = T3 * move;
+  EXPECT_TRUE(map.keyframePose(ids[2])->isApprox(T2 * T3.inverse() * T3 * move, 1e-12));
+  EXPECT_TRUE((*map.keyframePose(ids[2]) * map.keyframe(ids[3]).T_camera_world.inverse())
+                  .isApprox(T2 * T3.inverse(), 1e-12));
+  // ids[3] has no covisible keyframe left: its parent is the nearest older one, ids[1].
+  map.removeKeyframe(ids[3]);
+  const Eigen::Isometry3d T3_moved = T3 * move;
+  EXPECT_TRUE(map.keyframePose(ids[3])->isApprox(T3_moved, 1e-12));
+  map.keyframe(ids[1]).T_camera_world = T1 * move;
+  // Through two parents: ids[2] -> ids[3] -> ids[1].
+  EXPECT_TRUE(map.keyframePose(ids[2])->isApprox(T2 * T3.inverse() * T3_moved * T1.inverse() * T1 * move, 1e-9));
+  EXPECT_TRUE(map.keyframePose(ids[0])->isApprox(map.keyframe(ids[0]).T_camera_world, 1e-12));
+  EXPECT_FALSE(map.keyframePose(99).has_value());
+  // Copies keep the removed keyframes' parents.
+  const VisualMap copy = map;
+  EXPECT_TRUE(copy.keyframePose(ids[2])->isApprox(*map.keyframePose(ids[2]), 1e-12));
+}
+
 TEST(VisualMap, RejectsInconsistentObservations) {
   VisualMap map;
   const int kf = map.addKeyframe(keyframeWith(2, 0));

@@ -24,6 +24,11 @@ inline std::size_t depthCount(const std::vector<double>& depths) {
 struct VisualFrameRecord {
   double t = 0.0;
   visual::VisualFrameResult result;
+  // The pose (and the map's first view, with result.initial_reference) on
+  // the map's keyframes as they stand at the end of the run
+  // (finalVisualPoses in system_pipeline.h); none when the frame has no pose.
+  std::optional<Eigen::Isometry3d> T_world_camera_final;
+  std::optional<Eigen::Isometry3d> initial_reference_final;
   int fusion_lines_added = 0;  // landmarks created or given d_fu
   // Keyframe keypoints given a LiDAR depth from the raw scans (the default
   // source; LidarFrameRecord counts those from the fusion framework's features).

@@ -46,12 +46,26 @@ std::optional<MotionDisagreement> frameDisagreement(const PipelineRecords& recor
   return disagreement(records.visual[j - 1], records.visual[j], records.lidar[j - 1], records.lidar[j], T_lidar_camera);
 }
 
+// The frame's visual pose in its map: on the map's final keyframes when the
+// configuration asks and they are known (final_visual_poses.h), else as tracked.
+Eigen::Isometry3d visualPose(const VisualFrameRecord& v, bool final_map_poses) {
+  return final_map_poses && v.T_world_camera_final ? *v.T_world_camera_final : v.result.T_world_camera;
+}
+
+// The map's first view, placed the same way.
+StampedPose initialReference(const VisualFrameRecord& v, bool final_map_poses) {
+  StampedPose first = *v.result.initial_reference;
+  if (final_map_poses && v.initial_reference_final) first.T_world_frame = *v.initial_reference_final;
+  return first;
+}
+
 // The visual pose carried into the odometry frame by its map's alignment,
 // when the output may use it: a valid pose of an aligned map, and a LiDAR
 // pose to rest on.
-std::optional<Eigen::Isometry3d> visualInOdom(const visual::VisualFrameResult& r, bool lidar_reliable) {
+std::optional<Eigen::Isometry3d> visualInOdom(const VisualFrameRecord& v, bool final_map_poses, bool lidar_reliable) {
+  const visual::VisualFrameResult& r = v.result;
   if (!r.pose_valid || !r.T_world_odom || !lidar_reliable) return std::nullopt;
-  return r.T_world_odom->inverse() * r.T_world_camera;
+  return r.T_world_odom->inverse() * visualPose(v, final_map_poses);
 }
 
 // The visual pose of a frame fused with the LiDAR's at its time, when the
@@ -84,7 +98,7 @@ void lidarOutput(const PipelineRecords& records, const Eigen::Isometry3d& T_lida
 
 // Visual mode: each new map starts where the last one ended (the camera is
 // taken to have stood still while lost: no LiDAR to bridge the gap).
-void visualOutput(const PipelineRecords& records, SystemOutput& out) {
+void visualOutput(const PipelineRecords& records, bool final_map_poses, SystemOutput& out) {
   OutputTrajectory output(Eigen::Isometry3d::Identity());  // no LiDAR: nothing to carry
   bool any_pose = false;
   for (const VisualFrameRecord& v : records.visual) {
@@ -92,13 +106,14 @@ void visualOutput(const PipelineRecords& records, SystemOutput& out) {
     const auto& r = v.result;
     if (r.pose_valid) {
       if (r.initial_reference) {  // the map's first view, an earlier frame
-        const Eigen::Isometry3d T = output.add({r.initial_reference->t, r.initial_reference->T_world_frame, r.map_id,
-                                                std::nullopt},
-                                               OutputSource::kVisual);
+        const StampedPose first = initialReference(v, final_map_poses);
+        const Eigen::Isometry3d T =
+            output.add({first.t, first.T_world_frame, r.map_id, std::nullopt}, OutputSource::kVisual);
         for (FrameOutput& earlier : out.frames)
-          if (earlier.t == r.initial_reference->t) earlier.T_world_camera = T;
+          if (earlier.t == first.t) earlier.T_world_camera = T;
       }
-      frame.T_world_camera = output.add({v.t, r.T_world_camera, r.map_id, std::nullopt}, OutputSource::kVisual);
+      frame.T_world_camera =
+          output.add({v.t, visualPose(v, final_map_poses), r.map_id, std::nullopt}, OutputSource::kVisual);
       out.metric = any_pose ? out.metric && r.metric : r.metric;
       any_pose = true;
     } else {
@@ -124,7 +139,7 @@ void visualFirstOutput(const PipelineRecords& records, const SystemConfig& confi
     // Without any LiDAR pose yet nothing anchors the output world: skip.
     if (l.T_odom_lidar || !output.trajectory().empty()) {
       FrameEstimates estimates{v.t, std::nullopt, v.result.map_id, l.T_odom_lidar};
-      if (v.result.pose_valid) estimates.T_map_camera = v.result.T_world_camera;
+      if (v.result.pose_valid) estimates.T_map_camera = visualPose(v, config.final_map_poses);
       frame.T_world_camera = output.add(estimates, source);
     }
     out.frames.push_back(frame);
@@ -152,7 +167,7 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
       const Eigen::Isometry3d T_odom_camera_lidar = *l.T_odom_lidar * T_lidar_camera;
       path.add(v.t, T_odom_camera_lidar.translation());
       std::optional<Eigen::Isometry3d> visual, target;
-      if (source == OutputSource::kVisual) visual = visualInOdom(v.result, l.pose_reliable);
+      if (source == OutputSource::kVisual) visual = visualInOdom(v, config.final_map_poses, l.pose_reliable);
       if (visual) target = fusedWithLidar(v.result, *visual, T_odom_camera_lidar, config.output_fusion, path);
       frame.fused = target.has_value();
       Eigen::Isometry3d T_odom_camera = correction.add(T_odom_camera_lidar, target);
@@ -194,16 +209,17 @@ void addLines(const PipelineRecords& records, SystemOutput& out) {
 }
 
 // The subsystems' own trajectories (SystemOutput::visual_maps, lidar_camera).
-void addSubsystemTrajectories(const PipelineRecords& records, RunMode mode, const Eigen::Isometry3d& T_lidar_camera,
-                              SystemOutput& out) {
+void addSubsystemTrajectories(const PipelineRecords& records, const SystemConfig& config,
+                              const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
   for (const VisualFrameRecord& v : records.visual) {
     const auto& r = v.result;
     if (!r.pose_valid) continue;
     Trajectory& map = out.visual_maps[r.map_id];
-    if (r.initial_reference) map.push_back(*r.initial_reference);  // the map's first view, an earlier frame
-    map.push_back({v.t, r.T_world_camera});
+    // The map's first view, an earlier frame.
+    if (r.initial_reference) map.push_back(initialReference(v, config.final_map_poses));
+    map.push_back({v.t, visualPose(v, config.final_map_poses)});
   }
-  if (mode != RunMode::kFused) return;
+  if (config.mode != RunMode::kFused) return;
   for (const LidarFrameRecord& l : records.lidar)
     if (l.T_odom_lidar) out.lidar_camera.push_back({l.t, *l.T_odom_lidar * T_lidar_camera});
 }
@@ -230,7 +246,7 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
   const Eigen::Isometry3d T_lidar_camera = T_camera_lidar.inverse();
   switch (config.mode) {
     case RunMode::kLidar: lidarOutput(records, T_lidar_camera, out); break;
-    case RunMode::kVisual: visualOutput(records, out); break;
+    case RunMode::kVisual: visualOutput(records, config.final_map_poses, out); break;
     case RunMode::kFused:
       if (config.output_fusion.enabled)
         lidarFirstOutput(records, config, T_lidar_camera, out);
@@ -239,7 +255,7 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
       break;
   }
   addLines(records, out);
-  addSubsystemTrajectories(records, config.mode, T_lidar_camera, out);
+  addSubsystemTrajectories(records, config, T_lidar_camera, out);
   return out;
 }
 

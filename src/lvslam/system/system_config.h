@@ -49,6 +49,9 @@ struct SystemConfig {
   double keypoint_depth_max_dt = 0.1;
   KeypointDepthSource keypoint_depth_source = KeypointDepthSource::kScans;
   double map_voxel = 0.2;  // m, voxel of the exported LiDAR map (map.ply)
+  // Visual poses in the output on their keyframes' poses at the end of the
+  // run (final_visual_poses.h); false: each as tracked at its time.
+  bool final_map_poses = true;
   // One thread, fixed order: byte-identical output for the same input.
   bool deterministic = false;
 };

@@ -11,6 +11,7 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/system/bounded_queue.h"
+#include "lvslam/system/final_visual_poses.h"
 #include "lvslam/system/stopwatch.h"
 #include "lvslam/system/lidar_worker.h"
 #include "lvslam/system/visual_worker.h"
@@ -189,6 +190,7 @@ PipelineRecords collect(Workers& workers, PipelineRecords records) {
   if (workers.visual) {
     records.visual = workers.visual->frames();
     const visual::VisualSlam& slam = workers.visual->slam();
+    placeOnFinalKeyframes(slam.retiredMaps(), slam.map(), records.visual);
     const auto addLines = [&records](const visual::VisualMap& map, int map_id) {
       for (const auto& [id, line] : map.lines())
         if (!line.bad) records.visual_lines.push_back({line.start_world, line.end_world, line.from_fusion, map_id});

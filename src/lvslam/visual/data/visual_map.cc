@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
@@ -48,7 +49,7 @@ std::optional<double> upperMedian(std::vector<double> values) {
 
 VisualMap::VisualMap(const VisualMap& other)
     : keyframes_(other.keyframes_), points_(other.points_), lines_(other.lines_),
-      covisibility_(other.covisibility_), next_keyframe_id_(other.next_keyframe_id_),
+      covisibility_(other.covisibility_), removed_(other.removed_), next_keyframe_id_(other.next_keyframe_id_),
       T_world_odom_(other.T_world_odom_), point_by_id_(indexById(points_)), line_by_id_(indexById(lines_)) {}
 
 VisualMap& VisualMap::operator=(const VisualMap& other) {
@@ -161,6 +162,18 @@ void VisualMap::removeLine(int line) {
 
 void VisualMap::removeKeyframe(int keyframe) {
   const Keyframe& kf = find(keyframes_, keyframe, "keyframe");
+  int parent = -1;
+  const std::vector<int> covisible = covisibility_.neighbours(keyframe);
+  if (!covisible.empty()) {
+    parent = covisible.front();
+  } else {
+    auto older = keyframes_.find(keyframe);
+    auto newer = std::next(older);
+    if (older != keyframes_.begin()) parent = std::prev(older)->first;
+    else if (newer != keyframes_.end()) parent = newer->first;
+  }
+  if (parent >= 0)
+    removed_[keyframe] = {parent, keyframes_.at(parent).T_camera_world * kf.T_camera_world.inverse()};
   const std::vector<int> points = kf.point_landmark, lines = kf.line_landmark;
   for (const int p : points)
     if (p >= 0) removePointObservation(p, keyframe);
@@ -168,6 +181,20 @@ void VisualMap::removeKeyframe(int keyframe) {
     if (l >= 0) removeLineObservation(l, keyframe);
   covisibility_.removeNode(keyframe);
   keyframes_.erase(keyframe);
+}
+
+std::optional<Eigen::Isometry3d> VisualMap::keyframePose(int keyframe) const {
+  Eigen::Isometry3d T_keyframe_current = Eigen::Isometry3d::Identity();
+  // Parents are alive when a child is removed, so each step leads to a
+  // keyframe removed later or alive: the chain ends.
+  for (int id = keyframe;;) {
+    if (const auto alive = keyframes_.find(id); alive != keyframes_.end())
+      return T_keyframe_current * alive->second.T_camera_world;
+    const auto gone = removed_.find(id);
+    if (gone == removed_.end()) return std::nullopt;
+    T_keyframe_current = T_keyframe_current * gone->second.T_parent_keyframe.inverse();
+    id = gone->second.parent;
+  }
 }
 
 void VisualMap::setFusionDirection(int line, const Eigen::Vector3d& d_fu) {

@@ -42,8 +42,13 @@ class VisualMap {
   void removePoint(int point);
   void removeLine(int line);
   // Drops the keyframe's observations, its covisibility edges and the keyframe
-  // (keyframe culling). Landmarks keep their other observations.
+  // (keyframe culling). Landmarks keep their other observations. Its pose
+  // stays known relative to a parent (its most covisible keyframe, else the
+  // nearest older one): keyframePose() follows the parent as it moves on.
   void removeKeyframe(int keyframe);
+  // T_camera_world of a keyframe of this map, removed ones through their
+  // parents (ORB-SLAM's spanning tree); none for an id never added.
+  std::optional<Eigen::Isometry3d> keyframePose(int keyframe) const;
 
   void setFusionDirection(int line, const Eigen::Vector3d& d_fu);
   // LiDAR depth per keypoint of the keyframe (index = keypoint index);
@@ -87,6 +92,12 @@ class VisualMap {
   std::map<int, PointLandmark> points_;
   std::map<int, LineLandmark> lines_;
   CovisibilityGraph covisibility_;
+  // Removed keyframe -> its parent and its pose in the parent's camera frame.
+  struct RemovedKeyframe {
+    int parent = -1;
+    Eigen::Isometry3d T_parent_keyframe = Eigen::Isometry3d::Identity();
+  };
+  std::map<int, RemovedKeyframe> removed_;
   int next_keyframe_id_ = 0;
   std::optional<Eigen::Isometry3d> T_world_odom_;
   // Landmarks by id, for O(1) lookups: ids are dense and landmarks are never

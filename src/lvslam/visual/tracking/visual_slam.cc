@@ -205,6 +205,10 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
     result.anchor_time = medianFirstSeen(map, current.point_landmark);
   }
   result.T_world_odom = map.T_world_odom();
+  if (current_has_pose && map.hasKeyframe(reference_keyframe)) {
+    result.reference_keyframe = reference_keyframe;
+    result.T_keyframe_camera = map.keyframe(reference_keyframe).T_camera_world * current.T_camera_world.inverse();
+  }
   return result;
 }
 
@@ -250,6 +254,7 @@ void VisualSlam::Impl::initialize(const std::vector<PixelDepth>& hints, VisualFr
   current_has_pose = true;
   current_keyframe = built->keyframe2;
   result.initial_reference = StampedPose{reference_time, map.keyframe(built->keyframe1).T_camera_world.inverse()};
+  result.initial_reference_keyframe = built->keyframe1;
   result.inlier_ratio = static_cast<double>(init->num_triangulated) / std::max<size_t>(1, pairs.size());
   // Constant velocity per frame: the initial motion spread over its frames.
   const int frames = std::max(1, frame_index - reference_frame);

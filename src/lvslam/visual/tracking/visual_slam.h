@@ -75,8 +75,10 @@ struct VisualFrameResult {
   int map_id = 0;
   bool keyframe = false;
   bool metric = false;  // the map's scale came from depth hints
-  // The map was initialised in this frame: its first view, at an earlier time.
+  // The map was initialised in this frame: its first view, at an earlier time
+  // (keyframe initial_reference_keyframe).
   std::optional<StampedPose> initial_reference;
+  int initial_reference_keyframe = -1;
   // Figures for the detection module.
   int tracked_points = 0, tracked_lines = 0;
   double inlier_ratio = 0.0;  // inliers / matches of the last pose optimisation
@@ -95,6 +97,11 @@ struct VisualFrameResult {
   // When the landmarks this pose rests on were mapped (medianFirstSeen of
   // its inlier points); with a pose_information only.
   std::optional<double> anchor_time;
+  // The keyframe the frame was tracked against and the frame's pose relative
+  // to it then (T_keyframe_camera), to place the frame on the map's final
+  // keyframe poses (as ORB-SLAM's SaveTrajectoryTUM); -1 when none.
+  int reference_keyframe = -1;
+  Eigen::Isometry3d T_keyframe_camera = Eigen::Isometry3d::Identity();
 };
 
 class VisualSlam {

@@ -1,0 +1,31 @@
+#include "lvslam/system/final_visual_poses.h"
+
+namespace lvslam::system {
+
+namespace {
+
+const visual::VisualMap* mapWithId(const std::vector<visual::VisualMap>& retired, const visual::VisualMap& current,
+                                   int map_id) {
+  if (map_id < 0 || static_cast<std::size_t>(map_id) > retired.size()) return nullptr;
+  return static_cast<std::size_t>(map_id) == retired.size() ? &current : &retired[static_cast<std::size_t>(map_id)];
+}
+
+}  // namespace
+
+void placeOnFinalKeyframes(const std::vector<visual::VisualMap>& retired, const visual::VisualMap& current,
+                           std::vector<VisualFrameRecord>& frames) {
+  for (VisualFrameRecord& frame : frames) {
+    const visual::VisualFrameResult& r = frame.result;
+    if (!r.pose_valid) continue;
+    const visual::VisualMap* map = mapWithId(retired, current, r.map_id);
+    if (map == nullptr) continue;
+    if (r.reference_keyframe >= 0)
+      if (const auto T_keyframe_world = map->keyframePose(r.reference_keyframe))
+        frame.T_world_camera_final = T_keyframe_world->inverse() * r.T_keyframe_camera;
+    if (r.initial_reference && r.initial_reference_keyframe >= 0)
+      if (const auto T_first_world = map->keyframePose(r.initial_reference_keyframe))
+        frame.initial_reference_final = T_first_world->inverse();
+  }
+}
+
+}  // namespace lvslam::system

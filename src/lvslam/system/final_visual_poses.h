@@ -1,0 +1,21 @@
+#pragma once
+// The visual frames placed on their maps' keyframes as these stand at the end
+// of the run, as ORB-SLAM's SaveTrajectoryTUM places them: local BA and the
+// map correction go on moving a keyframe for many frames after it was made,
+// with observations that came later, while a frame's pose relative to the
+// keyframe it was tracked against is what tracking measured. A culled
+// keyframe is found through its parent (VisualMap::keyframePose).
+#include <vector>
+
+#include "lvslam/system/frame_records.h"
+#include "lvslam/visual/data/visual_map.h"
+
+namespace lvslam::system {
+
+// Sets T_world_camera_final (and initial_reference_final) of every frame with
+// a pose whose keyframe its map knows. Map id i < retired.size() is
+// retired[i], id retired.size() the current map (VisualSlam's numbering).
+void placeOnFinalKeyframes(const std::vector<visual::VisualMap>& retired, const visual::VisualMap& current,
+                           std::vector<VisualFrameRecord>& frames);
+
+}  // namespace lvslam::system
