@@ -88,7 +88,7 @@ TEST(SystemConfig, OutputFusionKeysAreReadAndChecked) {
       "  visual_pixel_sigma: 4\n"
       "  max_step_m: 0.005\n"
       "  max_step_deg: 0.2\n"
-      "  high_pass_gain: 0.5\n"
+      "  high_pass_gain: 0.4\n"
       "  high_pass_sigma_s: 0.4\n");
   EXPECT_FALSE(c.output_fusion.enabled);
   EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_m, 0.01);
@@ -98,7 +98,7 @@ TEST(SystemConfig, OutputFusionKeysAreReadAndChecked) {
   EXPECT_DOUBLE_EQ(c.output_fusion.visual_pixel_sigma, 4.0);
   EXPECT_DOUBLE_EQ(c.output_fusion.max_step_m, 0.005);
   EXPECT_DOUBLE_EQ(c.output_fusion.max_step_deg, 0.2);
-  EXPECT_DOUBLE_EQ(c.output_fusion.high_pass.gain, 0.5);
+  EXPECT_DOUBLE_EQ(c.output_fusion.high_pass.gain, 0.4);
   EXPECT_DOUBLE_EQ(c.output_fusion.high_pass.sigma_s, 0.4);
   EXPECT_THROW(load("output_fusion:\n  high_pass_gain: 1.5\n"), lvslam::Error);
   EXPECT_THROW(load("output_fusion:\n  high_pass_sigma_s: 0\n"), lvslam::Error);

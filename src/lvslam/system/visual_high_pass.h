@@ -17,7 +17,7 @@
 namespace lvslam::system {
 
 struct VisualHighPassConfig {
-  double gain = 0.3;      // share of the high-passed difference (0: off)
+  double gain = 0.5;      // share of the high-passed difference (0: off)
   double sigma_s = 0.32;  // width of the mean: a cut near 0.5 Hz
 };
 
