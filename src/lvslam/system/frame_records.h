@@ -26,7 +26,7 @@ struct VisualFrameRecord {
   visual::VisualFrameResult result;
   // The pose (and the map's first view, with result.initial_reference) on
   // the map's keyframes as they stand at the end of the run
-  // (finalVisualPoses in system_pipeline.h); none when the frame has no pose.
+  // (placeOnFinalKeyframes, final_visual_poses.h); none when the frame has no pose.
   std::optional<Eigen::Isometry3d> T_world_camera_final;
   std::optional<Eigen::Isometry3d> initial_reference_final;
   int fusion_lines_added = 0;  // landmarks created or given d_fu

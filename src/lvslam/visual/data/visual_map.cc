@@ -162,17 +162,7 @@ void VisualMap::removeLine(int line) {
 
 void VisualMap::removeKeyframe(int keyframe) {
   const Keyframe& kf = find(keyframes_, keyframe, "keyframe");
-  int parent = -1;
-  const std::vector<int> covisible = covisibility_.neighbours(keyframe);
-  if (!covisible.empty()) {
-    parent = covisible.front();
-  } else {
-    auto older = keyframes_.find(keyframe);
-    auto newer = std::next(older);
-    if (older != keyframes_.begin()) parent = std::prev(older)->first;
-    else if (newer != keyframes_.end()) parent = newer->first;
-  }
-  if (parent >= 0)
+  if (const int parent = parentFor(keyframe); parent >= 0)
     removed_[keyframe] = {parent, keyframes_.at(parent).T_camera_world * kf.T_camera_world.inverse()};
   const std::vector<int> points = kf.point_landmark, lines = kf.line_landmark;
   for (const int p : points)
@@ -181,6 +171,15 @@ void VisualMap::removeKeyframe(int keyframe) {
     if (l >= 0) removeLineObservation(l, keyframe);
   covisibility_.removeNode(keyframe);
   keyframes_.erase(keyframe);
+}
+
+int VisualMap::parentFor(int keyframe) const {
+  const std::vector<int> covisible = covisibility_.neighbours(keyframe);
+  if (!covisible.empty()) return covisible.front();
+  const auto it = keyframes_.find(keyframe);
+  if (it != keyframes_.begin()) return std::prev(it)->first;
+  const auto newer = std::next(it);
+  return newer != keyframes_.end() ? newer->first : -1;
 }
 
 std::optional<Eigen::Isometry3d> VisualMap::keyframePose(int keyframe) const {

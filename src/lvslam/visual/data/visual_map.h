@@ -98,6 +98,8 @@ class VisualMap {
     Eigen::Isometry3d T_parent_keyframe = Eigen::Isometry3d::Identity();
   };
   std::map<int, RemovedKeyframe> removed_;
+  // The keyframe a removed one is placed against (removeKeyframe); -1 if none.
+  int parentFor(int keyframe) const;
   int next_keyframe_id_ = 0;
   std::optional<Eigen::Isometry3d> T_world_odom_;
   // Landmarks by id, for O(1) lookups: ids are dense and landmarks are never
