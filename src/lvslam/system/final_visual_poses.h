@@ -9,6 +9,7 @@
 
 #include "lvslam/system/frame_records.h"
 #include "lvslam/visual/data/visual_map.h"
+#include "lvslam/visual/tracking/visual_slam.h"
 
 namespace lvslam::system {
 
@@ -17,5 +18,13 @@ namespace lvslam::system {
 // retired[i], id retired.size() the current map (VisualSlam's numbering).
 void placeOnFinalKeyframes(const std::vector<visual::VisualMap>& retired, const visual::VisualMap& current,
                            std::vector<VisualFrameRecord>& frames);
+
+// Then each placed frame that is not a keyframe is optimised again, from its
+// placed pose, on the observations it was tracked with, against its map's
+// landmarks as they stand at the end (VisualSlam::relocateInFinalMap): local
+// BA went on moving those landmarks after the frame was tracked. A frame too
+// few of whose landmarks remain keeps its placed pose. Returns the number of
+// frames moved.
+std::size_t relocateInFinalMaps(const visual::VisualSlam& slam, std::vector<VisualFrameRecord>& frames);
 
 }  // namespace lvslam::system

@@ -97,7 +97,7 @@ SystemConfig loadSystemConfig(const YamlConfig& root) {
   if (const auto s = root.find("system")) {
     s->requireKnownKeys({"fusion_lines_in_tracking", "lidar_direction_refinement", "depth_hint_max_dt",
                          "keypoint_depth_radius_px", "keypoint_depth_max_dt", "keypoint_depth_source",
-                         "map_voxel", "final_map_poses"});
+                         "map_voxel", "final_map_poses", "final_map_relocation"});
     c.fusion_lines_in_tracking = s->getBool("fusion_lines_in_tracking", c.fusion_lines_in_tracking);
     c.lidar_direction_refinement = s->getBool("lidar_direction_refinement", c.lidar_direction_refinement);
     c.depth_hint_max_dt = s->getDouble("depth_hint_max_dt", c.depth_hint_max_dt);
@@ -105,6 +105,7 @@ SystemConfig loadSystemConfig(const YamlConfig& root) {
     c.keypoint_depth_max_dt = s->getDouble("keypoint_depth_max_dt", c.keypoint_depth_max_dt);
     c.map_voxel = s->getDouble("map_voxel", c.map_voxel);
     c.final_map_poses = s->getBool("final_map_poses", c.final_map_poses);
+    c.final_map_relocation = s->getBool("final_map_relocation", c.final_map_relocation);
     if (const auto source = s->find("keypoint_depth_source")) {
       const std::string name = source->asString();
       if (name == "scans")

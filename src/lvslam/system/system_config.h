@@ -52,6 +52,9 @@ struct SystemConfig {
   // Visual poses in the output on their keyframes' poses at the end of the
   // run (final_visual_poses.h); false: each as tracked at its time.
   bool final_map_poses = true;
+  // Those frames then optimised again against the final landmarks
+  // (relocateInFinalMaps, final_visual_poses.h); false: only placed.
+  bool final_map_relocation = true;
   // One thread, fixed order: byte-identical output for the same input.
   bool deterministic = false;
 };

@@ -180,7 +180,7 @@ void workerLoop(BoundedQueue<Job>& queue, Failure& failure, Run run, const std::
   }
 }
 
-PipelineRecords collect(Workers& workers, PipelineRecords records) {
+PipelineRecords collect(Workers& workers, bool final_map_relocation, PipelineRecords records) {
   if (workers.lidar) {
     records.lidar = workers.lidar->frames();
     records.scans = workers.lidar->scans();
@@ -191,6 +191,7 @@ PipelineRecords collect(Workers& workers, PipelineRecords records) {
     records.visual = workers.visual->frames();
     const visual::VisualSlam& slam = workers.visual->slam();
     placeOnFinalKeyframes(slam.retiredMaps(), slam.map(), records.visual);
+    if (final_map_relocation) relocateInFinalMaps(slam, records.visual);
     const auto addLines = [&records](const visual::VisualMap& map, int map_id) {
       for (const auto& [id, line] : map.lines())
         if (!line.bad) records.visual_lines.push_back({line.start_world, line.end_world, line.from_fusion, map_id});
@@ -319,7 +320,7 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
   if (reading_error) std::rethrow_exception(reading_error);
   if (failure.first()) std::rethrow_exception(failure.first());
   records.scans_read = scans;
-  return collect(workers, std::move(records));
+  return collect(workers, config.final_map_relocation, std::move(records));
 }
 
 }  // namespace lvslam::system

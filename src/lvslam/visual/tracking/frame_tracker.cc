@@ -139,4 +139,35 @@ FrameTrackingResult trackLocalMap(const VisualMap& map, const LocalMap& local, c
   return out;
 }
 
+TrackedObservations trackedObservations(const TrackedFrame& frame) {
+  TrackedObservations out;
+  const FeatureFrame& f = frame.features;
+  for (size_t i = 0; i < frame.point_landmark.size(); ++i)
+    if (frame.point_landmark[i] >= 0)
+      out.points.push_back({frame.point_landmark[i], f.points[i].cast<float>(),
+                            static_cast<float>(invSigma2(f, static_cast<int>(i)))});
+  for (size_t i = 0; i < frame.line_landmark.size(); ++i)
+    if (frame.line_landmark[i] >= 0)
+      out.lines.push_back({frame.line_landmark[i], f.lines[i].start.cast<float>(), f.lines[i].end.cast<float>()});
+  return out;
+}
+
+std::optional<Eigen::Isometry3d> relocateInMap(const VisualMap& map, const TrackedObservations& observations,
+                                               const Eigen::Isometry3d& T_initial, const PinholeIntrinsics& intrinsics,
+                                               const FrameTrackerConfig& config) {
+  std::vector<PosePointObservation> points;
+  std::vector<PoseLineObservation> lines;
+  for (const TrackedPointObservation& o : observations.points) {
+    const PointLandmark& p = map.point(o.landmark);
+    if (!p.bad) points.push_back({p.p_world, o.pixel.cast<double>(), o.inv_sigma2});
+  }
+  for (const TrackedLineObservation& o : observations.lines) {
+    const LineLandmark& l = map.line(o.landmark);
+    if (!l.bad) lines.push_back({l.line_world, o.start.cast<double>(), o.end.cast<double>(), 1.0});
+  }
+  const PoseOptimizationResult r = optimizePose(T_initial, points, lines, intrinsics, config.pose);
+  if (!r.success || r.num_inliers < config.min_inliers) return std::nullopt;
+  return r.T_camera_world;
+}
+
 }  // namespace lvslam::visual

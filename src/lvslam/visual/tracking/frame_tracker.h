@@ -42,6 +42,33 @@ struct TrackedFrame {
   std::optional<Matrix6d> information;
 };
 
+// An inlier of a frame's last pose optimisation: the landmark and the frame's
+// measurement of it (undistorted pixels), kept to optimise the frame's pose
+// again once the landmarks have moved (relocateInMap).
+struct TrackedPointObservation {
+  int landmark = -1;
+  Eigen::Vector2f pixel = Eigen::Vector2f::Zero();
+  float inv_sigma2 = 1.0f;
+};
+struct TrackedLineObservation {
+  int landmark = -1;
+  Eigen::Vector2f start = Eigen::Vector2f::Zero(), end = Eigen::Vector2f::Zero();
+};
+struct TrackedObservations {
+  std::vector<TrackedPointObservation> points;
+  std::vector<TrackedLineObservation> lines;
+};
+// The frame's landmark associations (its inliers) as measurements.
+TrackedObservations trackedObservations(const TrackedFrame& frame);
+
+// The pose T_camera_world of a frame with these observations, optimised from
+// T_initial against the map's landmarks as they stand now (bad ones skipped),
+// with the tracker's pose optimisation. None when it fails or keeps fewer than
+// min_inliers inliers.
+std::optional<Eigen::Isometry3d> relocateInMap(const VisualMap& map, const TrackedObservations& observations,
+                                               const Eigen::Isometry3d& T_initial, const PinholeIntrinsics& intrinsics,
+                                               const FrameTrackerConfig& config);
+
 // Landmark ids to track against.
 struct LocalMap {
   std::vector<int> points, lines;

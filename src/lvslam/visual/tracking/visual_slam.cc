@@ -203,6 +203,7 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   if (current_has_pose && current.information) {
     result.pose_information = current.information;
     result.anchor_time = medianFirstSeen(map, current.point_landmark);
+    if (!result.keyframe) result.observations = trackedObservations(current);
   }
   result.T_world_odom = map.T_world_odom();
   if (current_has_pose && map.hasKeyframe(reference_keyframe)) {
@@ -428,6 +429,17 @@ TrackingState VisualSlam::state() const { return impl_->state; }
 int VisualSlam::mapId() const { return impl_->map_id; }
 const VisualMap& VisualSlam::map() const { return impl_->map; }
 const std::vector<VisualMap>& VisualSlam::retiredMaps() const { return impl_->retired_maps; }
+
+std::optional<Eigen::Isometry3d> VisualSlam::relocateInFinalMap(const VisualFrameResult& result,
+                                                                const Eigen::Isometry3d& T_world_camera_initial) const {
+  if (result.observations.points.empty() && result.observations.lines.empty()) return std::nullopt;
+  if (result.map_id < 0 || result.map_id > impl_->map_id) return std::nullopt;
+  const VisualMap& map = result.map_id == impl_->map_id ? impl_->map : impl_->retired_maps[result.map_id];
+  const auto T_camera_world =
+      relocateInMap(map, result.observations, T_world_camera_initial.inverse(), impl_->K, impl_->tracker);
+  if (!T_camera_world) return std::nullopt;
+  return T_camera_world->inverse();
+}
 
 std::vector<ImageLineSegment> VisualSlam::lineSegments() const {
   std::vector<ImageLineSegment> out;

@@ -24,6 +24,7 @@
 #include "lvslam/visual/module/map_culling.h"
 #include "lvslam/visual/module/point_triangulation.h"
 #include "lvslam/visual/tracking/extracted_image.h"
+#include "lvslam/visual/tracking/frame_tracker.h"
 #include "lvslam/visual/tracking/image_statistics.h"
 #include "lvslam/visual/tracking/local_keyframes.h"
 #include "lvslam/visual/tracking/map_initialization.h"
@@ -102,6 +103,10 @@ struct VisualFrameResult {
   // keyframe poses (as ORB-SLAM's SaveTrajectoryTUM); -1 when none.
   int reference_keyframe = -1;
   Eigen::Isometry3d T_keyframe_camera = Eigen::Isometry3d::Identity();
+  // The inliers the tracked pose rests on, to optimise it again against the
+  // map's final landmarks (VisualSlam::relocateInFinalMap); empty when the
+  // pose did not come from tracking.
+  TrackedObservations observations;
 };
 
 class VisualSlam {
@@ -164,6 +169,12 @@ class VisualSlam {
   const VisualMap& map() const;  // the current map, id mapId()
   // The earlier maps, index = map id (retiredMaps().size() == mapId()).
   const std::vector<VisualMap>& retiredMaps() const;
+  // The frame's pose T_world_camera in its map (result.map_id) as the map
+  // stands now: result.observations optimised again from T_world_camera_initial
+  // against the landmarks' current positions. None without observations, for
+  // an unknown map, or when too few inliers remain.
+  std::optional<Eigen::Isometry3d> relocateInFinalMap(const VisualFrameResult& result,
+                                                      const Eigen::Isometry3d& T_world_camera_initial) const;
 
  private:
   struct Impl;
