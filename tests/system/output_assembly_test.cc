@@ -441,7 +441,7 @@ TEST(AssembleOutput, OutputFusionTakesEachDirectionFromWhoKnowsItAndStepsAcrossS
   config.detection.frames_to_recover = 5;
   // The Gaussian product alone: vision's error, fixed in the camera, turns
   // in the odometry frame, which the high-pass (tested below) would pass in part.
-  config.output_fusion.high_pass.gain = 0.0;
+  config.output_fusion.high_pass.gain = config.output_fusion.high_pass.gain_vertical = 0.0;
   ASSERT_TRUE(config.output_fusion.enabled);
   const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
   ASSERT_EQ(out.frames.size(), 50u);
@@ -513,10 +513,13 @@ TEST(AssembleOutput, TheHighPassTakesAShareOfVisionsFastMotion) {
   SystemConfig config = configFor(RunMode::kFused);
   config.detection.frames_to_recover = 2;
   config.detection.max_disagreement_m = 0.01;  // the jitter is a 4 mm step each frame
-  const double gain = config.output_fusion.high_pass.gain;
+  // The jitter is along the odometry frame's z: the vertical share.
+  const double gain = config.output_fusion.high_pass.gain_vertical;
+  const double horizontal_gain = config.output_fusion.high_pass.gain;
   ASSERT_GT(gain, 0.0);
   for (const bool on : {true, false}) {
-    config.output_fusion.high_pass.gain = on ? gain : 0.0;
+    config.output_fusion.high_pass.gain_vertical = on ? gain : 0.0;
+    config.output_fusion.high_pass.gain = on ? horizontal_gain : 0.0;
     const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
     int checked = 0;
     for (std::size_t j = 1; j < out.frames.size(); ++j) {

@@ -91,6 +91,53 @@ TEST(PoseFusion, LidarInformationShrinksWithThePathSinceTheAnchor) {
   EXPECT_GT(w, 0.5);
 }
 
+// A far scene's tracker information: a sideways shift (rho_x) and a turn
+// about the camera's y (phi_y) trade against each other.
+Matrix6d coupledInformation() {
+  Matrix6d C = Matrix6d::Zero();  // covariance
+  C.diagonal() << 4e-6, 2e-6, 9e-6, 1e-7, 2e-7, 1e-7;
+  C(0, 4) = C(4, 0) = -0.9 * std::sqrt(4e-6 * 2e-7);
+  C(1, 3) = C(3, 1) = 0.8 * std::sqrt(2e-6 * 1e-7);
+  return C.inverse();
+}
+
+// Each block is the inverse of the covariance's block (the marginal), the
+// cross terms are gone; an information without coupling stays as it is,
+// directions it does not know included.
+TEST(PoseFusion, DecoupledInformationKeepsTheMarginals) {
+  const Matrix6d H = coupledInformation();
+  const Matrix6d C = H.inverse();
+  const Matrix6d D = decoupledInformation(H);
+  const Eigen::Matrix3d D_t = D.topLeftCorner<3, 3>(), D_r = D.bottomRightCorner<3, 3>();
+  const Eigen::Matrix3d C_t = C.topLeftCorner<3, 3>(), C_r = C.bottomRightCorner<3, 3>();
+  EXPECT_TRUE(D_t.inverse().isApprox(C_t, 1e-9));
+  EXPECT_TRUE(D_r.inverse().isApprox(C_r, 1e-9));
+  const Eigen::Matrix3d cross_tr = D.topRightCorner<3, 3>(), cross_rt = D.bottomLeftCorner<3, 3>();
+  EXPECT_EQ(cross_tr, Eigen::Matrix3d::Zero());
+  EXPECT_EQ(cross_rt, Eigen::Matrix3d::Zero());
+  // The marginal knows the shift less than the joint information does with the turn held.
+  EXPECT_LT(D(0, 0), H(0, 0));
+  Matrix6d partial = 1e6 * Matrix6d::Identity();
+  partial(0, 0) = 0.0;  // the camera's x unknown
+  EXPECT_TRUE(decoupledInformation(partial).isApprox(partial, 1e-12));
+}
+
+// Two estimates that agree on the centre and differ only in the turn: with
+// the coupled information the fused centre moves sideways along the tie,
+// with the decoupled one it stays where both put it.
+TEST(PoseFusion, ARotationDifferenceMovesNoCentreWhenDecoupled) {
+  const Eigen::Isometry3d lidar = kTCameraWorld;
+  const Eigen::Isometry3d visual =
+      (lidar.inverse() * makePose(expSO3(Eigen::Vector3d(0.0, 0.002, 0.0)), Eigen::Vector3d::Zero())).inverse();
+  ASSERT_LT((centre(visual) - centre(lidar)).norm(), 1e-15);
+  const Matrix6d H_lidar = isotropicPoseInformation(0.005, 0.15 * M_PI / 180.0);
+  const Eigen::Isometry3d coupled = fusePoses(lidar, H_lidar, visual, coupledInformation());
+  const Eigen::Isometry3d decoupled = fusePoses(lidar, H_lidar, visual, decoupledInformation(coupledInformation()));
+  EXPECT_GT((centre(coupled) - centre(lidar)).norm(), 1e-4);
+  EXPECT_LT((centre(decoupled) - centre(lidar)).norm(), 1e-6);
+  EXPECT_GT(rotationAngle(decoupled * lidar.inverse()), 0.001);  // the turn still comes from vision
+}
+
 // The output follows the LiDAR exactly without a target, reaches a target
 // by bounded steps, and returns to the LiDAR by bounded steps when the
 // target goes (vision leaves).

@@ -22,6 +22,7 @@ TEST(SystemConfig, EmptyFileKeepsEveryDefault) {
   EXPECT_EQ(c.fusion.arc_step_deg, d.fusion.arc_step_deg);
   EXPECT_EQ(c.map_voxel, d.map_voxel);
   EXPECT_TRUE(c.final_map_poses);
+  EXPECT_TRUE(c.final_map_relocation);
 }
 
 TEST(SystemConfig, ReadsEverySection) {
@@ -53,8 +54,10 @@ TEST(SystemConfig, ReadsEverySection) {
       "  keypoint_depth_max_dt: 0.07\n"
       "  keypoint_depth_source: features\n"
       "  map_voxel: 0.3\n"
-      "  final_map_poses: false\n");
+      "  final_map_poses: false\n"
+      "  final_map_relocation: false\n");
   EXPECT_FALSE(c.final_map_poses);
+  EXPECT_FALSE(c.final_map_relocation);
   EXPECT_DOUBLE_EQ(c.lidar.preprocess.voxel_size, 0.4);
   EXPECT_EQ(c.visual.visual.features.orb.max_features, 543);
   EXPECT_DOUBLE_EQ(c.fusion.arc_step_deg, 0.35);
@@ -89,6 +92,7 @@ TEST(SystemConfig, OutputFusionKeysAreReadAndChecked) {
       "  max_step_m: 0.005\n"
       "  max_step_deg: 0.2\n"
       "  high_pass_gain: 0.4\n"
+      "  high_pass_gain_vertical: 0.6\n"
       "  high_pass_sigma_s: 0.4\n");
   EXPECT_FALSE(c.output_fusion.enabled);
   EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_m, 0.01);
@@ -99,8 +103,10 @@ TEST(SystemConfig, OutputFusionKeysAreReadAndChecked) {
   EXPECT_DOUBLE_EQ(c.output_fusion.max_step_m, 0.005);
   EXPECT_DOUBLE_EQ(c.output_fusion.max_step_deg, 0.2);
   EXPECT_DOUBLE_EQ(c.output_fusion.high_pass.gain, 0.4);
+  EXPECT_DOUBLE_EQ(c.output_fusion.high_pass.gain_vertical, 0.6);
   EXPECT_DOUBLE_EQ(c.output_fusion.high_pass.sigma_s, 0.4);
   EXPECT_THROW(load("output_fusion:\n  high_pass_gain: 1.5\n"), lvslam::Error);
+  EXPECT_THROW(load("output_fusion:\n  high_pass_gain_vertical: -0.1\n"), lvslam::Error);
   EXPECT_THROW(load("output_fusion:\n  high_pass_sigma_s: 0\n"), lvslam::Error);
   EXPECT_DOUBLE_EQ(load("output_fusion:\n  high_pass_gain: 0\n").output_fusion.high_pass.gain, 0.0);  // off
   EXPECT_TRUE(load("{}").output_fusion.enabled);

@@ -9,7 +9,7 @@
 namespace lvslam::system {
 namespace {
 
-const VisualHighPassConfig kConfig{0.3, 0.2};  // window 0.6 s
+const VisualHighPassConfig kConfig{.gain = 0.3, .gain_vertical = 0.3, .sigma_s = 0.2};  // window 0.6 s
 
 TEST(VisualHighPass, AConstantOffsetPassesNothing) {
   VisualHighPass hp(kConfig);
@@ -65,8 +65,21 @@ TEST(VisualHighPass, AGapOrANewMapStartsAnew) {
 }
 
 TEST(VisualHighPass, GainZeroIsOff) {
-  VisualHighPass hp({0.0, 0.2});
-  for (int j = 0; j < 10; ++j) EXPECT_EQ(hp.add(j / 15.0, 0, Eigen::Vector3d(j * 0.01, 0, 0)), Eigen::Vector3d::Zero());
+  VisualHighPass hp({.gain = 0.0, .gain_vertical = 0.0, .sigma_s = 0.2});
+  for (int j = 0; j < 10; ++j)
+    EXPECT_EQ(hp.add(j / 15.0, 0, Eigen::Vector3d(j * 0.01, -j * 0.02, j * 0.03)), Eigen::Vector3d::Zero());
+}
+
+// The odometry frame's z takes its own share: a ramp of the same slope on
+// each axis passes gain on x and y and gain_vertical on z of the same
+// high-passed value.
+TEST(VisualHighPass, TheVerticalTakesItsOwnShare) {
+  VisualHighPass hp({.gain = 0.4, .gain_vertical = 0.8, .sigma_s = 0.2});
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int j = 0; j < 12; ++j) c = hp.add(j / 15.0, 0, Eigen::Vector3d::Constant(0.01 * j));
+  ASSERT_GT(c.x(), 1e-4);
+  EXPECT_NEAR(c.y(), c.x(), 1e-15);
+  EXPECT_NEAR(c.z(), 2.0 * c.x(), 1e-15);
 }
 
 }  // namespace

@@ -75,7 +75,7 @@ std::optional<Eigen::Isometry3d> fusedWithLidar(const visual::VisualFrameResult&
                                                 const Eigen::Isometry3d& T_odom_camera_lidar,
                                                 const PoseFusionConfig& c, const OdometryPathLength& path) {
   if (!r.pose_information) return std::nullopt;
-  const Matrix6d H_visual = *r.pose_information / (c.visual_pixel_sigma * c.visual_pixel_sigma);
+  const Matrix6d H_visual = decoupledInformation(*r.pose_information) / (c.visual_pixel_sigma * c.visual_pixel_sigma);
   const Matrix6d H_lidar = lidarPoseInformation(c, r.anchor_time ? path.since(*r.anchor_time) : 0.0);
   return fusePoses(T_odom_camera_visual.inverse(), H_visual, T_odom_camera_lidar.inverse(), H_lidar).inverse();
 }

@@ -22,6 +22,22 @@ Matrix6d lidarPoseInformation(const PoseFusionConfig& c, double path_m) {
   return isotropicPoseInformation(sigma_m, sigma_deg * deg);
 }
 
+Matrix6d decoupledInformation(const Matrix6d& information) {
+  // Marginals in information form (Schur complements), which stay defined
+  // when a direction is unknown (zero information): H_tt - H_tr H_rr^-1 H_rt
+  // and H_rr - H_rt H_tt^-1 H_tr (LDLT solves semi-definite blocks as
+  // pseudo-inverses).
+  const Eigen::Matrix3d H_tt = information.topLeftCorner<3, 3>();
+  const Eigen::Matrix3d H_rr = information.bottomRightCorner<3, 3>();
+  const Eigen::Matrix3d H_tr = information.topRightCorner<3, 3>();
+  const Eigen::Matrix3d translation = H_tt - H_tr * Eigen::LDLT<Eigen::Matrix3d>(H_rr).solve(H_tr.transpose());
+  const Eigen::Matrix3d rotation = H_rr - H_tr.transpose() * Eigen::LDLT<Eigen::Matrix3d>(H_tt).solve(H_tr);
+  Matrix6d out = Matrix6d::Zero();
+  out.topLeftCorner<3, 3>() = 0.5 * (translation + translation.transpose());
+  out.bottomRightCorner<3, 3>() = 0.5 * (rotation + rotation.transpose());
+  return out.allFinite() ? out : Matrix6d::Zero();
+}
+
 Eigen::Isometry3d fusePoses(const Eigen::Isometry3d& T_camera_world_a, const Matrix6d& information_a,
                             const Eigen::Isometry3d& T_camera_world_b, const Matrix6d& information_b) {
   const Vector6d delta_b = logSE3(T_camera_world_b * T_camera_world_a.inverse());

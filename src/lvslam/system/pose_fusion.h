@@ -52,6 +52,16 @@ Matrix6d isotropicPoseInformation(double sigma_m, double sigma_rad);
 // The LiDAR pose's information after `path_m` metres of drift (above).
 Matrix6d lidarPoseInformation(const PoseFusionConfig& config, double path_m);
 
+// The information of a pose estimate without its translation-rotation
+// coupling: the marginal information of the translation and of the
+// rotation, each from the covariance, and no cross terms. The tracker's
+// Hessian ties a sideways shift to a turn (far scenes), but its real errors
+// do not follow that tie; joined with the LiDAR pose through it, a
+// difference in rotation moved the centre (docs/benchmarks.md, "Decoupled
+// visual information"). A direction the information does not know stays
+// unknown.
+Matrix6d decoupledInformation(const Matrix6d& information);
+
 // The Gaussian product of two estimates of T_camera_world, linearised at
 // the first: delta = (H_a + H_b)^-1 H_b log(T_b T_a^-1), T = exp(delta) T_a.
 // Informations are for the left update (as above). Returns T_a when the sum

@@ -7,7 +7,7 @@ namespace lvslam::system {
 Eigen::Vector3d VisualHighPass::add(double t, int map_id, const std::optional<Eigen::Vector3d>& difference) {
   if (!difference || map_id != map_id_) window_.clear();
   map_id_ = map_id;
-  if (!difference || config_.gain == 0.0) return Eigen::Vector3d::Zero();
+  if (!difference || (config_.gain == 0.0 && config_.gain_vertical == 0.0)) return Eigen::Vector3d::Zero();
   const double span = 3.0 * config_.sigma_s;
   while (!window_.empty() && t - window_.front().t > span) window_.pop_front();
   window_.push_back({t, *difference});
@@ -19,7 +19,8 @@ Eigen::Vector3d VisualHighPass::add(double t, int map_id, const std::optional<Ei
     mean += w * s.d;
     weights += w;
   }
-  return config_.gain * (*difference - mean / weights);
+  const Eigen::Vector3d gains(config_.gain, config_.gain, config_.gain_vertical);
+  return gains.cwiseProduct(*difference - mean / weights);
 }
 
 }  // namespace lvslam::system
