@@ -28,16 +28,11 @@ void placeOnFinalKeyframes(const std::vector<visual::VisualMap>& retired, const 
   }
 }
 
-std::size_t relocateInFinalMaps(const visual::VisualSlam& slam, std::vector<VisualFrameRecord>& frames) {
-  std::size_t moved = 0;
-  for (VisualFrameRecord& frame : frames) {
-    if (!frame.T_world_camera_final) continue;
-    if (const auto T = slam.relocateInFinalMap(frame.result, *frame.T_world_camera_final)) {
-      frame.T_world_camera_final = *T;
-      ++moved;
-    }
-  }
-  return moved;
+void relocateInFinalMaps(const visual::VisualSlam& slam, std::vector<VisualFrameRecord>& frames) {
+  for (VisualFrameRecord& frame : frames)
+    if (frame.T_world_camera_final)
+      if (const auto T = slam.relocateInFinalMap(frame.result, *frame.T_world_camera_final))
+        frame.T_world_camera_final = *T;
 }
 
 }  // namespace lvslam::system

@@ -23,8 +23,7 @@ void placeOnFinalKeyframes(const std::vector<visual::VisualMap>& retired, const 
 // placed pose, on the observations it was tracked with, against its map's
 // landmarks as they stand at the end (VisualSlam::relocateInFinalMap): local
 // BA went on moving those landmarks after the frame was tracked. A frame too
-// few of whose landmarks remain keeps its placed pose. Returns the number of
-// frames moved.
-std::size_t relocateInFinalMaps(const visual::VisualSlam& slam, std::vector<VisualFrameRecord>& frames);
+// few of whose landmarks remain keeps its placed pose.
+void relocateInFinalMaps(const visual::VisualSlam& slam, std::vector<VisualFrameRecord>& frames);
 
 }  // namespace lvslam::system

@@ -65,7 +65,7 @@ DetectionConfig loadDetectionConfig(const YamlConfig& n) {
 PoseFusionConfig loadPoseFusionConfig(const YamlConfig& n) {
   n.requireKnownKeys({"enabled", "lidar_sigma_m", "lidar_sigma_deg", "lidar_drift_m", "lidar_drift_deg",
                       "visual_pixel_sigma", "max_step_m", "max_step_deg", "high_pass_gain", "high_pass_gain_vertical",
-                     "high_pass_sigma_s"});
+                      "high_pass_sigma_s"});
   PoseFusionConfig c;
   c.enabled = n.getBool("enabled", c.enabled);
   c.lidar_sigma_m = n.getDouble("lidar_sigma_m", c.lidar_sigma_m);

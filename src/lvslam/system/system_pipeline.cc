@@ -188,7 +188,7 @@ PipelineRecords collect(Workers& workers, bool final_map_relocation, PipelineRec
     records.lidar_map = workers.lidar->map().points();
   }
   if (workers.visual) {
-    records.visual = workers.visual->frames();
+    records.visual = workers.visual->takeFrames();
     const visual::VisualSlam& slam = workers.visual->slam();
     placeOnFinalKeyframes(slam.retiredMaps(), slam.map(), records.visual);
     if (final_map_relocation) relocateInFinalMaps(slam, records.visual);

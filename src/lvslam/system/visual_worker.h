@@ -30,7 +30,9 @@ class VisualWorker {
   // The fusion framework's answer for the frame just tracked.
   void applyFusion(const FusionAnswer& answer);
 
-  const std::vector<VisualFrameRecord>& frames() const { return frames_; }
+  // The records of every frame, handed over once the run has ended (each
+  // keeps its tracked observations, so they are moved, not copied).
+  std::vector<VisualFrameRecord> takeFrames() { return std::move(frames_); }
   const visual::VisualSlam& slam() const { return slam_; }
 
  private:
