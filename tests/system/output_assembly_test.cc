@@ -440,8 +440,8 @@ TEST(AssembleOutput, OutputFusionTakesEachDirectionFromWhoKnowsItAndStepsAcrossS
   SystemConfig config = configFor(RunMode::kFused);
   config.detection.frames_to_recover = 5;
   // The Gaussian product alone: vision's error, fixed in the camera, turns
-  // in the odometry frame, which the high-pass (tested below) would pass in part.
-  config.output_fusion.high_pass.gain = config.output_fusion.high_pass.gain_vertical = 0.0;
+  // in the odometry frame, which the band-pass (tested below) would pass in part.
+  config.output_fusion.band_pass.gain = config.output_fusion.band_pass.gain_vertical = 0.0;
   ASSERT_TRUE(config.output_fusion.enabled);
   const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
   ASSERT_EQ(out.frames.size(), 50u);
@@ -490,10 +490,10 @@ TEST(AssembleOutput, OutputFusionWithoutTheInformationFollowsTheLidar) {
 
 // The LiDAR's camera jitters by +-2 mm frame to frame, vision is exact but
 // carries no information (so the Gaussian product keeps the LiDAR's pose):
-// the visual high-pass takes a share of vision's fast motion, so the output's
+// the visual band-pass takes a share of vision's fast motion, so the output's
 // jitter shrinks to about (1 - gain) of the LiDAR's, and without it is the
 // LiDAR's own.
-TEST(AssembleOutput, TheHighPassTakesAShareOfVisionsFastMotion) {
+TEST(AssembleOutput, TheBandPassTakesAShareOfVisionsFastMotion) {
   FusedScenario s = blackoutScenario(20);
   const auto jitter = [](std::size_t j) { return Eigen::Vector3d(0.0, 0.0, j % 2 == 0 ? 0.002 : -0.002); };
   for (std::size_t j = 0; j < s.records.visual.size(); ++j) {
@@ -514,16 +514,16 @@ TEST(AssembleOutput, TheHighPassTakesAShareOfVisionsFastMotion) {
   config.detection.frames_to_recover = 2;
   config.detection.max_disagreement_m = 0.01;  // the jitter is a 4 mm step each frame
   // The jitter is along the odometry frame's z: the vertical share.
-  const double gain = config.output_fusion.high_pass.gain_vertical;
-  const double horizontal_gain = config.output_fusion.high_pass.gain;
+  const double gain = config.output_fusion.band_pass.gain_vertical;
+  const double horizontal_gain = config.output_fusion.band_pass.gain;
   ASSERT_GT(gain, 0.0);
   for (const bool on : {true, false}) {
-    config.output_fusion.high_pass.gain_vertical = on ? gain : 0.0;
-    config.output_fusion.high_pass.gain = on ? horizontal_gain : 0.0;
+    config.output_fusion.band_pass.gain_vertical = on ? gain : 0.0;
+    config.output_fusion.band_pass.gain = on ? horizontal_gain : 0.0;
     const SystemOutput out = assembleOutput(s.records, config, kTCameraLidar);
     int checked = 0;
     for (std::size_t j = 1; j < out.frames.size(); ++j) {
-      // Frames whose high-pass window holds more than the frame itself.
+      // Frames whose band-pass window holds more than the frame itself.
       if (out.frames[j].source != OutputSource::kVisual || out.frames[j - 1].source != OutputSource::kVisual) continue;
       const Eigen::Vector3d error =
           out.frames[j].T_world_camera->translation() - (kTOdomWorld * trueCamera(frameTime(j))).translation();

@@ -91,9 +91,10 @@ TEST(SystemConfig, OutputFusionKeysAreReadAndChecked) {
       "  visual_pixel_sigma: 4\n"
       "  max_step_m: 0.005\n"
       "  max_step_deg: 0.2\n"
-      "  high_pass_gain: 0.4\n"
-      "  high_pass_gain_vertical: 0.6\n"
-      "  high_pass_sigma_s: 0.4\n");
+      "  band_pass_gain: 0.4\n"
+      "  band_pass_gain_vertical: 0.6\n"
+      "  band_pass_sigma_s: 0.4\n"
+      "  band_pass_sigma_fast_s: 0.05\n");
   EXPECT_FALSE(c.output_fusion.enabled);
   EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_m, 0.01);
   EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_deg, 0.3);
@@ -102,13 +103,17 @@ TEST(SystemConfig, OutputFusionKeysAreReadAndChecked) {
   EXPECT_DOUBLE_EQ(c.output_fusion.visual_pixel_sigma, 4.0);
   EXPECT_DOUBLE_EQ(c.output_fusion.max_step_m, 0.005);
   EXPECT_DOUBLE_EQ(c.output_fusion.max_step_deg, 0.2);
-  EXPECT_DOUBLE_EQ(c.output_fusion.high_pass.gain, 0.4);
-  EXPECT_DOUBLE_EQ(c.output_fusion.high_pass.gain_vertical, 0.6);
-  EXPECT_DOUBLE_EQ(c.output_fusion.high_pass.sigma_s, 0.4);
-  EXPECT_THROW(load("output_fusion:\n  high_pass_gain: 1.5\n"), lvslam::Error);
-  EXPECT_THROW(load("output_fusion:\n  high_pass_gain_vertical: -0.1\n"), lvslam::Error);
-  EXPECT_THROW(load("output_fusion:\n  high_pass_sigma_s: 0\n"), lvslam::Error);
-  EXPECT_DOUBLE_EQ(load("output_fusion:\n  high_pass_gain: 0\n").output_fusion.high_pass.gain, 0.0);  // off
+  EXPECT_DOUBLE_EQ(c.output_fusion.band_pass.gain, 0.4);
+  EXPECT_DOUBLE_EQ(c.output_fusion.band_pass.gain_vertical, 0.6);
+  EXPECT_DOUBLE_EQ(c.output_fusion.band_pass.sigma_s, 0.4);
+  EXPECT_DOUBLE_EQ(c.output_fusion.band_pass.sigma_fast_s, 0.05);
+  EXPECT_THROW(load("output_fusion:\n  band_pass_gain: 1.5\n"), lvslam::Error);
+  EXPECT_THROW(load("output_fusion:\n  band_pass_gain_vertical: -0.1\n"), lvslam::Error);
+  EXPECT_THROW(load("output_fusion:\n  band_pass_sigma_s: 0\n"), lvslam::Error);
+  EXPECT_THROW(load("output_fusion:\n  band_pass_sigma_fast_s: -0.01\n"), lvslam::Error);
+  EXPECT_THROW(load("output_fusion:\n  band_pass_sigma_s: 0.1\n  band_pass_sigma_fast_s: 0.1\n"), lvslam::Error);
+  EXPECT_THROW(load("output_fusion:\n  high_pass_gain: 0.4\n"), lvslam::Error);  // the keys' old name
+  EXPECT_DOUBLE_EQ(load("output_fusion:\n  band_pass_gain: 0\n").output_fusion.band_pass.gain, 0.0);  // off
   EXPECT_TRUE(load("{}").output_fusion.enabled);
   EXPECT_THROW(load("output_fusion:\n  lidar_sigma_m: 0\n"), lvslam::Error);
   EXPECT_THROW(load("output_fusion:\n  visual_pixel_sigma: -1\n"), lvslam::Error);

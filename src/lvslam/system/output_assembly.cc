@@ -6,7 +6,7 @@
 #include "lvslam/system/odometry_path_length.h"
 #include "lvslam/system/output_trajectory.h"
 #include "lvslam/system/pose_fusion.h"
-#include "lvslam/system/visual_high_pass.h"
+#include "lvslam/system/visual_band_pass.h"
 
 namespace lvslam::system {
 
@@ -155,8 +155,8 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
                       const Eigen::Isometry3d& T_lidar_camera, SystemOutput& out) {
   DetectionModule detection(config.detection);
   OutputCorrection correction(config.output_fusion.max_step_m, config.output_fusion.max_step_deg);
-  VisualHighPass high_pass(config.output_fusion.high_pass);
   OdometryPathLength path;
+  std::vector<VisualDifference> differences;  // for the band-pass, one per output pose
   for (std::size_t j = 0; j < records.visual.size(); ++j) {
     const VisualFrameRecord& v = records.visual[j];
     const LidarFrameRecord& l = records.lidar[j];
@@ -171,13 +171,21 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
       if (visual) target = fusedWithLidar(v.result, *visual, T_odom_camera_lidar, config.output_fusion, path);
       frame.fused = target.has_value();
       Eigen::Isometry3d T_odom_camera = correction.add(T_odom_camera_lidar, target);
-      std::optional<Eigen::Vector3d> difference;
-      if (visual) difference = visual->translation() - T_odom_camera.translation();
-      T_odom_camera.translation() += high_pass.add(v.t, v.result.map_id, difference);
+      VisualDifference difference{v.t, v.result.map_id, std::nullopt};
+      if (visual) difference.d = visual->translation() - T_odom_camera.translation();
+      differences.push_back(difference);
       frame.T_world_camera = T_odom_camera;
       out.trajectory.push_back({v.t, T_odom_camera});
     }
     out.frames.push_back(frame);
+  }
+  // Vision's fast motion, filtered over the whole run (zero phase).
+  const std::vector<Eigen::Vector3d> corrections = visualBandPass(differences, config.output_fusion.band_pass);
+  std::size_t k = 0;  // frames with a pose, in the trajectory's order
+  for (FrameOutput& frame : out.frames) {
+    if (!frame.T_world_camera) continue;
+    frame.T_world_camera->translation() += corrections[k];
+    out.trajectory[k++].T_world_frame = *frame.T_world_camera;
   }
   out.switches = detection.switches();
 }

@@ -9,7 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "lvslam/core/se3.h"
-#include "lvslam/system/visual_high_pass.h"
+#include "lvslam/system/visual_band_pass.h"
 
 namespace lvslam::system {
 
@@ -40,8 +40,8 @@ struct PoseFusionConfig {
   // per frame (output_correction.h).
   double max_step_m = 0.002;
   double max_step_deg = 0.05;
-  // Then a share of vision's fast motion (visual_high_pass.h).
-  VisualHighPassConfig high_pass;
+  // Then a share of vision's fast motion (visual_band_pass.h).
+  VisualBandPassConfig band_pass;
 };
 
 // Information of a pose with isotropic camera-centre and rotation noise, for

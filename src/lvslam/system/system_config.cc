@@ -64,8 +64,8 @@ DetectionConfig loadDetectionConfig(const YamlConfig& n) {
 
 PoseFusionConfig loadPoseFusionConfig(const YamlConfig& n) {
   n.requireKnownKeys({"enabled", "lidar_sigma_m", "lidar_sigma_deg", "lidar_drift_m", "lidar_drift_deg",
-                      "visual_pixel_sigma", "max_step_m", "max_step_deg", "high_pass_gain", "high_pass_gain_vertical",
-                      "high_pass_sigma_s"});
+                      "visual_pixel_sigma", "max_step_m", "max_step_deg", "band_pass_gain", "band_pass_gain_vertical",
+                      "band_pass_sigma_s", "band_pass_sigma_fast_s"});
   PoseFusionConfig c;
   c.enabled = n.getBool("enabled", c.enabled);
   c.lidar_sigma_m = n.getDouble("lidar_sigma_m", c.lidar_sigma_m);
@@ -75,17 +75,19 @@ PoseFusionConfig loadPoseFusionConfig(const YamlConfig& n) {
   c.visual_pixel_sigma = n.getDouble("visual_pixel_sigma", c.visual_pixel_sigma);
   c.max_step_m = n.getDouble("max_step_m", c.max_step_m);
   c.max_step_deg = n.getDouble("max_step_deg", c.max_step_deg);
-  c.high_pass.gain = n.getDouble("high_pass_gain", c.high_pass.gain);
-  c.high_pass.gain_vertical = n.getDouble("high_pass_gain_vertical", c.high_pass.gain_vertical);
-  c.high_pass.sigma_s = n.getDouble("high_pass_sigma_s", c.high_pass.sigma_s);
+  c.band_pass.gain = n.getDouble("band_pass_gain", c.band_pass.gain);
+  c.band_pass.gain_vertical = n.getDouble("band_pass_gain_vertical", c.band_pass.gain_vertical);
+  c.band_pass.sigma_s = n.getDouble("band_pass_sigma_s", c.band_pass.sigma_s);
+  c.band_pass.sigma_fast_s = n.getDouble("band_pass_sigma_fast_s", c.band_pass.sigma_fast_s);
   if (!(c.lidar_sigma_m > 0.0 && c.lidar_sigma_deg > 0.0 && c.visual_pixel_sigma > 0.0))
     n.fail("lidar_sigma_m, lidar_sigma_deg and visual_pixel_sigma must be positive");
   if (!(c.max_step_m > 0.0 && c.max_step_deg > 0.0)) n.fail("max_step_m and max_step_deg must be positive");
   if (!(c.lidar_drift_m >= 0.0 && c.lidar_drift_deg >= 0.0)) n.fail("lidar_drift_m and lidar_drift_deg must be >= 0");
-  if (!(c.high_pass.gain >= 0.0 && c.high_pass.gain <= 1.0)) n.fail("high_pass_gain must lie in [0, 1]");
-  if (!(c.high_pass.gain_vertical >= 0.0 && c.high_pass.gain_vertical <= 1.0))
-    n.fail("high_pass_gain_vertical must lie in [0, 1]");
-  if (!(c.high_pass.sigma_s > 0.0)) n.fail("high_pass_sigma_s must be positive");
+  if (!(c.band_pass.gain >= 0.0 && c.band_pass.gain <= 1.0)) n.fail("band_pass_gain must lie in [0, 1]");
+  if (!(c.band_pass.gain_vertical >= 0.0 && c.band_pass.gain_vertical <= 1.0))
+    n.fail("band_pass_gain_vertical must lie in [0, 1]");
+  if (!(c.band_pass.sigma_fast_s >= 0.0 && c.band_pass.sigma_fast_s < c.band_pass.sigma_s))
+    n.fail("need 0 <= band_pass_sigma_fast_s < band_pass_sigma_s");
   return c;
 }
 
