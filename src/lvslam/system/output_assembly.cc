@@ -175,17 +175,15 @@ void lidarFirstOutput(const PipelineRecords& records, const SystemConfig& config
       if (visual) difference.d = visual->translation() - T_odom_camera.translation();
       differences.push_back(difference);
       frame.T_world_camera = T_odom_camera;
-      out.trajectory.push_back({v.t, T_odom_camera});
     }
     out.frames.push_back(frame);
   }
   // Vision's fast motion, filtered over the whole run (zero phase).
   const std::vector<Eigen::Vector3d> corrections = visualBandPass(differences, config.output_fusion.band_pass);
-  std::size_t k = 0;  // frames with a pose, in the trajectory's order
-  for (FrameOutput& frame : out.frames) {
+  for (FrameOutput& frame : out.frames) {  // those with a pose: one correction each, in order
     if (!frame.T_world_camera) continue;
-    frame.T_world_camera->translation() += corrections[k];
-    out.trajectory[k++].T_world_frame = *frame.T_world_camera;
+    frame.T_world_camera->translation() += corrections[out.trajectory.size()];
+    out.trajectory.push_back({frame.t, *frame.T_world_camera});
   }
   out.switches = detection.switches();
 }
