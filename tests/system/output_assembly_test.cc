@@ -491,8 +491,9 @@ TEST(AssembleOutput, OutputFusionWithoutTheInformationFollowsTheLidar) {
 // The LiDAR's camera jitters by +-2 mm frame to frame, vision is exact but
 // carries no information (so the Gaussian product keeps the LiDAR's pose):
 // the visual band-pass takes a share of vision's fast motion, so the output's
-// jitter shrinks to about (1 - gain) of the LiDAR's, and without it is the
-// LiDAR's own.
+// jitter shrinks to between (1 - gain) and (1 - gain / 2) of the LiDAR's (at
+// these 10 Hz frames the narrow Gaussian keeps 84 % of a frame-to-frame
+// jitter), and without it is the LiDAR's own.
 TEST(AssembleOutput, TheBandPassTakesAShareOfVisionsFastMotion) {
   FusedScenario s = blackoutScenario(20);
   const auto jitter = [](std::size_t j) { return Eigen::Vector3d(0.0, 0.0, j % 2 == 0 ? 0.002 : -0.002); };
