@@ -121,14 +121,14 @@ TEST(LidarTruth, WalkingPersonIsWhereItWalksAtEachPointsTime) {
   options.walking_person = true;
   options.duration = 20.0;
   const Scenario scenario = makeScenario(options);
-  ASSERT_TRUE(scenario.person);
+  ASSERT_EQ(scenario.people.size(), 1u);
   const LidarSimulator lidar(scenario);
   int on_person = 0;
   for (const double t : {3.0, 8.0, 13.0}) {
     const LidarScan scan = lidar.scanLidar(t);
     for (std::size_t k = 0; k < scan.size(); ++k) {
       const Eigen::Vector3d p = scenario.T_world_lidar(scan.pointTime(k)) * scan.points[k].p.cast<double>();
-      const double to_person = distanceToSurface(scenario.person->at(scan.pointTime(k)), p);
+      const double to_person = distanceToSurface(scenario.people[0].at(scan.pointTime(k)), p);
       const double to_world = scenario.world.distanceToSurface(p);
       EXPECT_LT(std::min(to_person, to_world), 0.1);
       if (to_person < 0.05 && to_world > 0.2) ++on_person;

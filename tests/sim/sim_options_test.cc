@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "lvslam/core/error.h"
@@ -42,6 +44,24 @@ TEST(SimOptions, MalformedBlackoutNamesTheOption) {
   const TimeInterval interval = parseTimeInterval("1.5,2", "--camera-blackout");
   EXPECT_DOUBLE_EQ(interval.begin, 1.5);
   EXPECT_DOUBLE_EQ(interval.end, 2.0);
+}
+
+TEST(SimOptions, BadRealismOptionsNameTheOption) {
+  const auto messageFor = [](auto change) {
+    SimOptions options;
+    change(options);
+    return errorMessageOf([&] { validate(options); });
+  };
+  EXPECT_NE(messageFor([](SimOptions& o) { o.lidar = "hdl64"; }).find("--lidar"), std::string::npos);
+  EXPECT_NE(messageFor([](SimOptions& o) { o.people = -1; }).find("--people"), std::string::npos);
+  EXPECT_NE(messageFor([](SimOptions& o) { o.people = kMaxPeople + 1; }).find("--people"), std::string::npos);
+  EXPECT_NE(messageFor([](SimOptions& o) { o.speed_scale = 0.0; }).find("--speed-scale"), std::string::npos);
+  EXPECT_NE(messageFor([](SimOptions& o) { o.exposure_scale = std::nan(""); }).find("--exposure-scale"),
+            std::string::npos);
+  // A crowd needs walking lanes, which only the hall has.
+  SimOptions room;
+  room.people = 3;
+  EXPECT_NE(errorMessageOf([&] { makeScenario(room); }).find("--people"), std::string::npos);
 }
 
 }  // namespace

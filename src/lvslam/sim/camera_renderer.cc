@@ -15,6 +15,9 @@ namespace lvslam::sim {
 namespace {
 constexpr int kTileSize = 16;
 constexpr double kNearPlane = 0.05;
+// Normalised image coordinates (about 12 pixels) a rolling-shutter band's cull
+// is widened by: far more than 1 rad/s or 2 m/s at 0.3 m move in 0.4 ms.
+constexpr double kRollingCullMargin = 0.02;
 }  // namespace
 
 CameraRenderer::CameraRenderer(const Scenario& scenario) : scenario_(scenario) {
@@ -47,11 +50,11 @@ CameraRenderer::CameraRenderer(const Scenario& scenario) : scenario_(scenario) {
 
 // The projection of a convex polytope clipped to z >= near is bounded by its
 // front corners and the points where its edges cross the near plane.
-std::vector<std::vector<int>> CameraRenderer::cullPerTile(const Eigen::Isometry3d& T_world_camera) const {
+void CameraRenderer::cullPerTile(const std::vector<Primitive>& primitives, const Eigen::Isometry3d& T_world_camera,
+                                 int y0, int y1, double margin, std::vector<std::vector<int>>& lists) const {
   const Eigen::Isometry3d T_camera_world = T_world_camera.inverse();
-  std::vector<std::vector<int>> lists(tiles_.size());
-  const auto& primitives = scenario_.world.primitives();
   for (std::size_t id = 0; id < primitives.size(); ++id) {
+    if (primitives[id].glass) continue;
     const BoundingPolytope poly = boundingPolytope(primitives[id]);
     std::vector<Eigen::Vector3d> c;
     for (const auto& corner : poly.corners) c.push_back(T_camera_world * corner);
@@ -68,13 +71,21 @@ std::vector<std::vector<int>> CameraRenderer::cullPerTile(const Eigen::Isometry3
       if ((a.z() < kNearPlane) != (b.z() < kNearPlane)) add(a + (b - a) * ((kNearPlane - a.z()) / (b.z() - a.z())));
     }
     if (lo.x() > hi.x()) continue;  // entirely behind the camera
+    lo.array() -= margin;
+    hi.array() += margin;
     for (std::size_t k = 0; k < tiles_.size(); ++k) {
       const Tile& tile = tiles_[k];
+      if (tile.y0 < y0 || tile.y0 >= y1) continue;
       if (lo.x() <= tile.hi.x() && hi.x() >= tile.lo.x() && lo.y() <= tile.hi.y() && hi.y() >= tile.lo.y())
         lists[k].push_back(static_cast<int>(id));
     }
   }
-  return lists;
+}
+
+double CameraRenderer::rowTime(double t, int y) const {
+  const double line_time = scenario_.camera.line_time;
+  if (line_time == 0.0) return t;
+  return t + (y - 0.5 * (scenario_.camera.camera.height() - 1)) * line_time;
 }
 
 // Lambertian: ambient + main light + lamps falling off with the squared distance.
@@ -89,21 +100,43 @@ double CameraRenderer::radianceOf(const Eigen::Vector3d& point, const Eigen::Vec
   return albedo * irradiance;
 }
 
+// With a rolling shutter the primitives are culled once per band of tile
+// rows, at the pose of the band's middle row and with a margin that covers
+// the motion within the band (16 rows, under a millisecond).
 void CameraRenderer::renderInstant(double t, cv::Mat& radiance, cv::Mat* depth) const {
-  const Eigen::Isometry3d T_world_camera = scenario_.T_world_camera(t);
-  const auto lists = cullPerTile(T_world_camera);
-  const Eigen::Matrix3d R = T_world_camera.linear();
-  const Eigen::Vector3d origin = T_world_camera.translation();
-  const int w = scenario_.camera.camera.width();
+  const int w = scenario_.camera.camera.width(), h = scenario_.camera.camera.height();
+  const bool rolling = scenario_.camera.line_time != 0.0;
+  // Per row (one for a global shutter): the camera pose and the people.
+  std::vector<Eigen::Isometry3d> T_world_row(rolling ? h : 1);
+  std::vector<std::vector<Primitive>> people_row(T_world_row.size());
+  for (std::size_t y = 0; y < T_world_row.size(); ++y) {
+    T_world_row[y] = scenario_.T_world_camera(rowTime(t, static_cast<int>(y)));
+    people_row[y] = peopleAt(scenario_.people, rowTime(t, static_cast<int>(y)));
+  }
+  const auto& primitives = scenario_.world.primitives();
+  std::vector<std::vector<int>> lists(tiles_.size()), people_lists(tiles_.size());
+  if (!rolling) {
+    cullPerTile(primitives, T_world_row[0], 0, h, 0.0, lists);
+    cullPerTile(people_row[0], T_world_row[0], 0, h, 0.0, people_lists);
+  }
+  for (int y0 = 0; rolling && y0 < h; y0 += kTileSize) {
+    const int mid = std::min(y0 + kTileSize / 2, h - 1);
+    cullPerTile(primitives, T_world_row[mid], y0, y0 + kTileSize, kRollingCullMargin, lists);
+    cullPerTile(people_row[mid], T_world_row[mid], y0, y0 + kTileSize, kRollingCullMargin, people_lists);
+  }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles_.size()), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t k = r.begin(); k != r.end(); ++k) {
       const Tile& tile = tiles_[k];
-      for (int y = tile.y0; y < tile.y1; ++y)
+      for (int y = tile.y0; y < tile.y1; ++y) {
+        const Eigen::Isometry3d& T_world_camera = T_world_row[rolling ? y : 0];
+        const Eigen::Matrix3d R = T_world_camera.linear();
+        const Eigen::Vector3d origin = T_world_camera.translation();
+        const std::vector<Primitive>& people = people_row[rolling ? y : 0];
         for (int x = tile.x0; x < tile.x1; ++x) {
           const Eigen::Vector3d& ray = rays_[static_cast<std::size_t>(y) * w + x];
           const Eigen::Vector3d dir = R * ray;
           auto hit = scenario_.world.raycastAmong(lists[k], origin, dir, 1e9, pixel_angle_);
-          if (scenario_.person) addPersonHit(scenario_.world, *scenario_.person, t, origin, dir, 1e9, pixel_angle_, hit);
+          for (const int i : people_lists[k]) addPersonHit(scenario_.world, people[i], origin, dir, 1e9, pixel_angle_, hit);
           float value = 0.0f, z = 0.0f;
           if (hit) {
             value = static_cast<float>(radianceOf(origin + hit->distance * dir, hit->normal, hit->albedo));
@@ -114,6 +147,7 @@ void CameraRenderer::renderInstant(double t, cv::Mat& radiance, cv::Mat* depth) 
           radiance.at<float>(y, x) += value;
           if (depth) depth->at<float>(y, x) = z;
         }
+      }
     }
   });
 }
@@ -127,15 +161,22 @@ cv::Mat CameraRenderer::renderDepth(double t) const {
 }
 
 cv::Mat CameraRenderer::renderImage(double t) const {
+  return renderImage(t, Exposure{scenario_.camera.exposure, 1.0});
+}
+
+cv::Mat CameraRenderer::renderImage(double t, const Exposure& exposure) const {
   const CameraConfig& config = scenario_.camera;
   const PinholeCamera& cam = config.camera;
   cv::Mat radiance = cv::Mat::zeros(cam.height(), cam.width(), CV_32F);
   const int n = std::max(config.blur_samples, 1);
   for (int k = 0; k < n; ++k) {  // the shutter stays open while the robot moves
-    const double tk = n == 1 ? t : t + config.exposure * (static_cast<double>(k) / (n - 1) - 0.5);
+    const double tk = n == 1 ? t : t + exposure.time * (static_cast<double>(k) / (n - 1) - 0.5);
     renderInstant(tk, radiance, nullptr);
   }
-  radiance *= config.gain / n;
+  radiance *= config.gain * exposure.factor(config.exposure) / n;
+  // Analog gain amplifies the read noise and each photon's share of the signal.
+  const double read_noise = config.read_noise * exposure.gain;
+  const double shot_variance = config.shot_noise * config.shot_noise * exposure.gain;
   cv::multiply(radiance, vignette_, radiance);
   cv::GaussianBlur(radiance, radiance, cv::Size(3, 3), 0.6);  // lens and demosaicing softness
   const CounterRandom noise(scenario_.options.seed, RandomStream::kCamera, std::bit_cast<std::uint64_t>(t));
@@ -145,8 +186,7 @@ cv::Mat CameraRenderer::renderImage(double t) const {
       const auto pair = noise.normalPairAt((static_cast<std::uint64_t>(y) * cam.width() + x) / 2);
       for (int i = 0; i < 2 && x + i < cam.width(); ++i) {
         const double dn = radiance.at<float>(y, x + i);
-        const double sigma = std::sqrt(config.read_noise * config.read_noise +
-                                       config.shot_noise * config.shot_noise * std::max(dn, 0.0));
+        const double sigma = std::sqrt(read_noise * read_noise + shot_variance * std::max(dn, 0.0));
         const double value = dn + sigma * (i == 0 ? pair.x : pair.y);
         image.at<std::uint8_t>(y, x + i) = static_cast<std::uint8_t>(std::clamp(std::lround(value), 0L, 255L));
       }

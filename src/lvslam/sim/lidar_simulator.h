@@ -2,9 +2,10 @@
 // A spinning multi-ring LiDAR (VLP-32C-like): every column of lasers fires at
 // its own time while the robot moves, each ray cast from the sensor pose of
 // that instant, so the scan is raw and motion-distorted like a real one.
-// Range noise along the ray, dropouts (more at grazing incidence and on dark
-// surfaces), no return from the sky or beyond the maximum range, intensity
-// from albedo and incidence.
+// Range noise along the ray (growing with range and incidence when so
+// configured), dropouts (more at grazing incidence and on dark surfaces), no
+// return from the sky, glass or beyond the maximum range, intensity from
+// albedo and incidence; each pulse a ray or a footprint (lidar_beam.h).
 #include "lvslam/core/lidar_scan.h"
 #include "lvslam/sim/scenario.h"
 

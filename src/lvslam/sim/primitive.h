@@ -24,6 +24,9 @@ struct Primitive {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   Eigen::Vector3d half = Eigen::Vector3d::Zero();
   int texture = 0;  // index into World's textures
+  // A glass pane: the camera sees through it, the LiDAR gets no return from
+  // it (or one from behind it, lidar_beam.h).
+  bool glass = false;
 };
 
 struct AlignedBox {

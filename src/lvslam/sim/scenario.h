@@ -1,12 +1,15 @@
 #pragma once
 // A complete simulated recording setup: world, robot motion, rig, sensors and
-// light. makeScenario builds the M2DGR-like scenes (room, hall, gate).
+// light. makeScenario builds the M2DGR-like scenes (room, hall, gate) and the
+// scenes of the families (corridor, yard, office, atrium; families.h).
 #include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
 
 #include "lvslam/core/camera.h"
+#include "lvslam/sim/auto_exposure.h"
+#include "lvslam/sim/lidar_beam.h"
 #include "lvslam/sim/robot_trajectory.h"
 #include "lvslam/sim/sim_options.h"
 #include "lvslam/sim/walking_person.h"
@@ -31,6 +34,11 @@ struct CameraConfig {
   double read_noise = 1.5;     // DN, Gaussian
   double shot_noise = 0.12;    // DN per sqrt(DN)
   double vignetting = 0.25;    // brightness lost at the image corners
+  // Rolling shutter: seconds between the exposures of consecutive rows (0:
+  // global shutter). Row y is exposed around t + (y - (height - 1) / 2) *
+  // line_time, so the time stamp t is the middle of the middle row's exposure.
+  double line_time = 0.0;
+  AutoExposureConfig auto_exposure;  // off: every frame at `exposure` and `gain`
 };
 
 struct LidarConfig {
@@ -38,9 +46,12 @@ struct LidarConfig {
   int columns = 1800;                  // firings per revolution (0.2 deg)
   double rate_hz = 10.0;
   double start_offset = 0.0;           // first sweep start, seconds after the sequence start
-  double range_noise = 0.015;          // metres, Gaussian along the ray
+  double range_noise = 0.015;          // metres, Gaussian along the ray (sigma0 of rangeSigma)
+  double range_noise_per_metre = 0.0;  // sigma grows by this per metre of range
+  double min_cos_incidence = 1.0;      // sigma / max(cos incidence, this); 1: no incidence effect
   double min_range = 0.5, max_range = 100.0;
   double dropout = 0.01;               // probability of a lost return on a good surface
+  BeamModel beam;                      // footprint (mixed returns) and glass
 };
 
 struct PointLight {
@@ -65,7 +76,7 @@ struct Scenario {
   CameraConfig camera;
   LidarConfig lidar;
   Lighting lighting;
-  std::optional<WalkingPerson> person;  // only with options.walking_person
+  std::vector<WalkingPerson> people;  // options.people (at least one with options.walking_person)
 
   // Poses at t seconds after the sequence start (the renderer's own poses).
   Eigen::Isometry3d T_world_body(double t) const { return trajectory.T_world_body(t); }

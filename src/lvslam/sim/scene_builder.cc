@@ -27,6 +27,12 @@ void SceneBuilder::rect(const Eigen::Vector3d& center, const Eigen::Matrix3d& ax
   primitives_.push_back({PrimitiveKind::kRect, axes, center, Eigen::Vector3d(half_x, half_y, 0.0), texture});
 }
 
+void SceneBuilder::glassPane(const Eigen::Vector3d& center, const Eigen::Matrix3d& axes, double half_x,
+                             double half_y, int texture) {
+  rect(center, axes, half_x, half_y, texture);
+  primitives_.back().glass = true;
+}
+
 void SceneBuilder::box(const Eigen::Vector3d& center, const Eigen::Matrix3d& axes, const Eigen::Vector3d& half,
                        int texture) {
   primitives_.push_back({PrimitiveKind::kBox, axes, center, half, texture});

@@ -32,6 +32,9 @@ class SceneBuilder {
   int texture(TextureKind kind, double albedo, double albedo2, double scale, double roughness = 0.04);
 
   void rect(const Eigen::Vector3d& center, const Eigen::Matrix3d& axes, double half_x, double half_y, int texture);
+  // A rectangle of glass (Primitive::glass): its texture is never seen.
+  void glassPane(const Eigen::Vector3d& center, const Eigen::Matrix3d& axes, double half_x, double half_y,
+                 int texture);
   void box(const Eigen::Vector3d& center, const Eigen::Matrix3d& axes, const Eigen::Vector3d& half, int texture);
   // An upright box given its footprint centre, yaw and full sizes, standing on z0.
   void uprightBox(const Eigen::Vector2d& xy, double yaw, const Eigen::Vector3d& size, double z0, int texture);

@@ -12,6 +12,14 @@ const std::vector<Eigen::Vector2d> kLampPosts{{-2.0, -4.0}, {-2.0, 5.0}, {9.0, 1
                                               {25.5, 0.0},  {9.0, -12.0}, {17.0, -12.0}};
 constexpr double kLampHeight = 4.5;
 
+Lighting outdoorNight() {
+  Lighting light = outdoorDark();
+  for (const auto& xy : kLampPosts) light.lamps.push_back({Eigen::Vector3d(xy.x(), xy.y(), kLampHeight - 0.1), 6.0});
+  return light;
+}
+
+}  // namespace
+
 Lighting outdoorDay() {
   Lighting light;
   light.ambient = 0.4;
@@ -21,16 +29,26 @@ Lighting outdoorDay() {
   return light;
 }
 
-Lighting outdoorNight() {
+Lighting outdoorDark() {
   Lighting light = outdoorDay();
   light.ambient = 0.03;
   light.directional = 0.0;
   light.sky = 0.03;
-  for (const auto& xy : kLampPosts) light.lamps.push_back({Eigen::Vector3d(xy.x(), xy.y(), kLampHeight - 0.1), 6.0});
   return light;
 }
 
-}  // namespace
+SceneSetup outdoorSetup(const Eigen::Vector2d& walk_from, const Eigen::Vector2d& walk_to) {
+  SceneSetup setup;
+  setDrive(setup.path, 1.0, 0.5, 0.5);
+  setup.path.shake_deg = 0.5;
+  setup.path.shake_height = 0.005;
+  setup.day = outdoorDay();
+  setup.night = outdoorDark();
+  setup.exposure = 0.008;
+  setup.person.from = walk_from;
+  setup.person.to = walk_to;
+  return setup;
+}
 
 SceneSetup buildGateScene(SceneBuilder& scene) {
   // A paved campus with an asphalt road through the gate.
@@ -60,7 +78,7 @@ SceneSetup buildGateScene(SceneBuilder& scene) {
     scene.uprightBox(xy, M_PI / 2, {2.2, 1.6, 0.55}, 1.0, car);
   }
 
-  SceneSetup setup;
+  SceneSetup setup = outdoorSetup({-8.5, -4.0}, {-8.5, 10.0});
   // A loop that passes through the gate and round the end of the fence.
   for (const Eigen::Vector2d& xy :
        {Eigen::Vector2d(0, -6), Eigen::Vector2d(0, -2), Eigen::Vector2d(0, 2), Eigen::Vector2d(0, 6),
@@ -69,16 +87,7 @@ SceneSetup buildGateScene(SceneBuilder& scene) {
         Eigen::Vector2d(22, -6), Eigen::Vector2d(19, -9.5), Eigen::Vector2d(15, -10), Eigen::Vector2d(11, -10),
         Eigen::Vector2d(7, -10), Eigen::Vector2d(3, -9.5)})
     setup.path.waypoints.push_back(xy + Eigen::Vector2d(scene.rng().uniform(-0.15, 0.15), 0.0));
-  setup.path.max_speed = 1.0;
-  setup.path.max_turn_rate = 0.5;
-  setup.path.acceleration = 0.5;
-  setup.path.shake_deg = 0.5;
-  setup.path.shake_height = 0.005;
-  setup.day = outdoorDay();
-  setup.night = outdoorNight();
-  setup.exposure = 0.008;
-  setup.person.from = {-8.5, -4.0};
-  setup.person.to = {-8.5, 10.0};
+  setup.night = outdoorNight();  // the street lamps are lit
   return setup;
 }
 

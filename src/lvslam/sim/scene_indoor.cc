@@ -5,8 +5,6 @@
 
 namespace lvslam::sim {
 
-namespace {
-
 Lighting indoorDay() {
   Lighting light;
   light.ambient = 0.6;
@@ -23,7 +21,30 @@ Lighting indoorNight() {
   return light;
 }
 
-}  // namespace
+SceneSetup indoorSetup(double exposure, const Eigen::Vector2d& walk_from, const Eigen::Vector2d& walk_to) {
+  SceneSetup setup;
+  setup.day = indoorDay();
+  setup.night = indoorNight();
+  setup.exposure = exposure;
+  setup.person.from = walk_from;
+  setup.person.to = walk_to;
+  return setup;
+}
+
+void addEllipseLoop(SceneBuilder& scene, PathConfig& path, const Eigen::Vector2d& centre, double rx, double ry,
+                    int count, double jitter) {
+  for (int i = 0; i < count; ++i) {
+    const double a = 2.0 * M_PI * i / count;
+    const double r = 1.0 + scene.rng().uniform(-jitter, jitter);
+    path.waypoints.emplace_back(centre.x() + rx * r * std::cos(a), centre.y() + ry * r * std::sin(a));
+  }
+}
+
+void setDrive(PathConfig& path, double max_speed, double max_turn_rate, double acceleration) {
+  path.max_speed = max_speed;
+  path.max_turn_rate = max_turn_rate;
+  path.acceleration = acceleration;
+}
 
 SceneSetup buildRoomScene(SceneBuilder& scene) {
   const ShellStyle style{scene.texture(TextureKind::kTiles, 0.55, 0.2, 0.6, 0.04),
@@ -57,21 +78,9 @@ SceneSetup buildRoomScene(SceneBuilder& scene) {
   addBoxStack(scene, {6.0, 7.5}, 0.4, 2);
   addCeilingLights(scene, {2.0, 2.0}, {8.0, 6.0}, 2.0, 3.0);
 
-  SceneSetup setup;
-  // An uneven loop around the middle desk.
-  for (int i = 0; i < 10; ++i) {
-    const double a = 2.0 * M_PI * i / 10.0;
-    const double r = 1.0 + scene.rng().uniform(-0.06, 0.06);
-    setup.path.waypoints.emplace_back(5.0 + 2.9 * r * std::cos(a), 4.0 + 2.0 * r * std::sin(a));
-  }
-  setup.path.max_speed = 0.4;
-  setup.path.max_turn_rate = 0.45;
-  setup.path.acceleration = 0.25;
-  setup.day = indoorDay();
-  setup.night = indoorNight();
-  setup.exposure = 0.012;
-  setup.person.from = {1.2, 2.2};
-  setup.person.to = {1.2, 5.8};
+  SceneSetup setup = indoorSetup(0.012, {1.2, 2.2}, {1.2, 5.8});
+  addEllipseLoop(scene, setup.path, {5.0, 4.0}, 2.9, 2.0, 10, 0.06);  // uneven, around the middle desk
+  setDrive(setup.path, 0.4, 0.45, 0.25);
   return setup;
 }
 
@@ -129,6 +138,9 @@ SceneSetup buildHallScene(SceneBuilder& scene) {
   setup.blur_by_default = true;
   setup.person.from = {5.0, 8.0};
   setup.person.to = {25.0, 8.0};
+  // Lengthwise either side of the pillars, crosswise between them (x 9 and 21).
+  for (const double y : {2.5, 7.0, 13.0, 17.5}) setup.lanes.push_back({{2.5, y}, {27.5, y}});
+  for (const double x : {3.0, 9.0, 21.0, 27.0}) setup.lanes.push_back({{x, 1.8}, {x, 18.2}});
   return setup;
 }
 

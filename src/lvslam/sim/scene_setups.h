@@ -12,7 +12,27 @@ struct SceneSetup {
   double exposure = 0.012;     // seconds
   bool blur_by_default = false;
   WalkingPerson person;        // used when the options ask for one
+  std::vector<WalkingLane> lanes;  // where more people may walk (options.people > 1)
 };
+
+Lighting indoorDay();
+Lighting indoorNight();
+Lighting outdoorDay();
+Lighting outdoorDark();  // night without street lamps
+
+// An indoor setup lit by indoorDay (indoorNight at night), exposed `exposure`
+// seconds, its person walking between two points; the caller adds the drive.
+SceneSetup indoorSetup(double exposure, const Eigen::Vector2d& walk_from, const Eigen::Vector2d& walk_to);
+
+// An outdoor setup: driven at up to 1 m/s on rougher ground, lit by
+// outdoorDay (outdoorDark at night), exposed 8 ms, its person walking from-to.
+SceneSetup outdoorSetup(const Eigen::Vector2d& walk_from, const Eigen::Vector2d& walk_to);
+
+// `count` waypoints on an ellipse, each radius scaled by 1 +- `jitter` (seeded).
+void addEllipseLoop(SceneBuilder& scene, PathConfig& path, const Eigen::Vector2d& centre, double rx, double ry,
+                    int count, double jitter);
+// The limits of a drive: speed (m/s), turn rate (rad/s), acceleration (m/s^2).
+void setDrive(PathConfig& path, double max_speed, double max_turn_rate, double acceleration);
 
 // Texture-rich office about 10 x 8 x 3 m: desks, shelves, boxes, doors,
 // windows, posters; slow motion (0.4 m/s).
@@ -23,5 +43,16 @@ SceneSetup buildHallScene(SceneBuilder& scene);
 // Outdoors: facades with windows, a gate in a fence, trees, lamp posts,
 // kerbs, long ranges and open sky.
 SceneSetup buildGateScene(SceneBuilder& scene);
+// A 240 m corridor, 2.4 m wide: plain walls, flush doors every 6 m on both
+// sides, posters; the LiDAR is degenerate along it (its ends are out of range).
+SceneSetup buildCorridorScene(SceneBuilder& scene);
+// An open paved yard: textured paving, few objects within LiDAR range,
+// buildings beyond it.
+SceneSetup buildYardScene(SceneBuilder& scene);
+// An office of white walls and plain furniture: good geometry, little texture.
+SceneSetup buildOfficeScene(SceneBuilder& scene);
+// An atrium walled by glass: a curtain-wall facade, glass partitions in front
+// of meeting rooms, pillars and a few pieces of furniture.
+SceneSetup buildAtriumScene(SceneBuilder& scene);
 
 }  // namespace lvslam::sim

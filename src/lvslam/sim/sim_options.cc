@@ -1,5 +1,6 @@
 #include "lvslam/sim/sim_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -24,8 +25,18 @@ std::vector<double> parsePair(const std::string& text, const std::string& option
 }  // namespace
 
 void validate(const SimOptions& options) {
-  if (options.scenario != "room" && options.scenario != "hall" && options.scenario != "gate")
-    throw Error("--scenario", "unknown scenario '" + options.scenario + "' (expected room, hall or gate)");
+  const std::vector<std::string> scenarios{"room", "hall", "gate", "corridor", "yard", "office", "atrium"};
+  if (std::find(scenarios.begin(), scenarios.end(), options.scenario) == scenarios.end())
+    throw Error("--scenario", "unknown scenario '" + options.scenario +
+                                  "' (expected room, hall, gate, corridor, yard, office or atrium)");
+  if (options.lidar != "vlp32c" && options.lidar != "vlp16")
+    throw Error("--lidar", "unknown LiDAR '" + options.lidar + "' (expected vlp32c or vlp16)");
+  if (options.people < 0 || options.people > kMaxPeople)
+    throw Error("--people", "must be between 0 and " + std::to_string(kMaxPeople));
+  if (!std::isfinite(options.speed_scale) || options.speed_scale <= 0.0 || options.speed_scale > 3.0)
+    throw Error("--speed-scale", "must be in (0, 3]");
+  if (!std::isfinite(options.exposure_scale) || options.exposure_scale <= 0.0 || options.exposure_scale > 5.0)
+    throw Error("--exposure-scale", "must be in (0, 5]");
   if (!std::isfinite(options.duration) || options.duration <= 0.0)
     throw Error("--duration", "must be a positive number of seconds");
   if (options.duration > 3600.0) throw Error("--duration", "at most 3600 seconds");

@@ -48,8 +48,10 @@ void writeExtrinsicsTruth(const std::string& path, const Eigen::Isometry3d& trut
 
 SequenceInfo makeInfo(const Scenario& scenario, const Eigen::Isometry3d& T_camera_lidar) {
   SequenceInfo info;
-  info.name = fmt::format("sim_{}{}_seed{}", scenario.name, scenario.options.night ? "_night" : "",
-                          scenario.options.seed);
+  info.name = scenario.options.family.empty()
+                  ? fmt::format("sim_{}{}_seed{}", scenario.name, scenario.options.night ? "_night" : "",
+                                scenario.options.seed)
+                  : fmt::format("sim_{}_seed{}", scenario.options.family, scenario.options.seed);
   info.camera = CameraInfo{scenario.camera.camera, scenario.camera.rate_hz};
   LidarInfo lidar;
   lidar.rings = static_cast<int>(scenario.lidar.elevations_deg.size());
@@ -118,6 +120,7 @@ SimulationSummary simulateSequence(const SimOptions& options, const std::string&
   SimulationSummary summary;
   std::vector<double> sensor_times;  // seconds after the start, for the ground truth
   const double camera_period = 1.0 / scenario.camera.rate_hz;
+  AutoExposure exposure(scenario.camera.auto_exposure, scenario.camera.exposure, camera_period);
   const double sweep = lidar.sweepDuration();
   // Both streams in time order; a sweep is written once it has ended.
   for (int k = 0, j = 0;;) {
@@ -127,8 +130,9 @@ SimulationSummary simulateSequence(const SimOptions& options, const std::string&
     const bool scan_left = t_scan + sweep <= options.duration;
     if (!image_left && !scan_left) break;
     if (image_left && (!scan_left || t_image <= t_scan + sweep)) {
-      cv::Mat image = renderer.renderImage(t_image);
+      cv::Mat image = renderer.renderImage(t_image, exposure.current());
       if (inBlackout(options, t_image)) image.setTo(0);
+      exposure.update(image);  // the next frame's exposure, from what this one shows
       writer.writeImage(options.start_time + t_image, image);
       sensor_times.push_back(t_image);
       ++k;

@@ -43,7 +43,7 @@ std::optional<WorldHit> World::raycastPrimitive(const Primitive& primitive, cons
 }
 
 std::optional<WorldHit> World::raycast(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir, double max_range,
-                                       double pixel_angle) const {
+                                       double pixel_angle, bool through_glass) const {
   const double norm = dir.norm();
   if (!(norm > 0.0) || !origin.allFinite()) return std::nullopt;
   const Eigen::Vector3d d = dir / norm;
@@ -51,6 +51,7 @@ std::optional<WorldHit> World::raycast(const Eigen::Vector3d& origin, const Eige
   std::optional<SurfaceHit> best;
   int best_id = -1;
   bvh_.traverse(origin, d, t_max, [&](int id) {
+    if (through_glass && primitives_[id].glass) return;
     if (auto hit = intersect(primitives_[id], origin, d, t_max)) {
       t_max = hit->distance;
       best = hit;

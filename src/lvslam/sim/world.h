@@ -39,9 +39,11 @@ class World {
 
   // Nearest surface along the ray from `origin` in direction `dir` (need not
   // be unit), up to max_range. `pixel_angle` (radians) is the angular size of
-  // one pixel, used to filter textures; 0 for a point sample (LiDAR).
+  // one pixel, used to filter textures; 0 for a point sample (LiDAR). Glass
+  // panes are surfaces unless `through_glass`.
   std::optional<WorldHit> raycast(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
-                                  double max_range = 1e9, double pixel_angle = 0.0) const;
+                                  double max_range = 1e9, double pixel_angle = 0.0,
+                                  bool through_glass = false) const;
   // Same, testing only the given primitives (a renderer's culled list).
   std::optional<WorldHit> raycastAmong(const std::vector<int>& ids, const Eigen::Vector3d& origin,
                                        const Eigen::Vector3d& unit_dir, double max_range,
