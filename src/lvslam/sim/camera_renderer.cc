@@ -46,6 +46,15 @@ CameraRenderer::CameraRenderer(const Scenario& scenario) : scenario_(scenario) {
         }
       tiles_.push_back(tile);
     }
+  tile_columns_ = (w + kTileSize - 1) / kTileSize;
+  column_x_.assign(tile_columns_, Eigen::Vector2d(1e300, -1e300));
+  row_y_.assign(tiles_.size() / tile_columns_, Eigen::Vector2d(1e300, -1e300));
+  for (std::size_t k = 0; k < tiles_.size(); ++k) {
+    Eigen::Vector2d& x = column_x_[k % tile_columns_];
+    Eigen::Vector2d& y = row_y_[k / tile_columns_];
+    x = Eigen::Vector2d(std::min(x[0], tiles_[k].lo.x()), std::max(x[1], tiles_[k].hi.x()));
+    y = Eigen::Vector2d(std::min(y[0], tiles_[k].lo.y()), std::max(y[1], tiles_[k].hi.y()));
+  }
 }
 
 // The projection of a convex polytope clipped to z >= near is bounded by its
@@ -73,11 +82,16 @@ void CameraRenderer::cullPerTile(const std::vector<Primitive>& primitives, const
     if (lo.x() > hi.x()) continue;  // entirely behind the camera
     lo.array() -= margin;
     hi.array() += margin;
-    for (std::size_t k = 0; k < tiles_.size(); ++k) {
-      const Tile& tile = tiles_[k];
-      if (tile.y0 < y0 || tile.y0 >= y1) continue;
-      if (lo.x() <= tile.hi.x() && hi.x() >= tile.lo.x() && lo.y() <= tile.hi.y() && hi.y() >= tile.lo.y())
-        lists[k].push_back(static_cast<int>(id));
+    for (std::size_t row = 0; row < row_y_.size(); ++row) {
+      const int row_y0 = static_cast<int>(row) * kTileSize;
+      if (row_y0 < y0 || row_y0 >= y1 || lo.y() > row_y_[row][1] || hi.y() < row_y_[row][0]) continue;
+      for (int column = 0; column < tile_columns_; ++column) {
+        if (lo.x() > column_x_[column][1] || hi.x() < column_x_[column][0]) continue;
+        const std::size_t k = row * tile_columns_ + column;
+        const Tile& tile = tiles_[k];
+        if (lo.x() <= tile.hi.x() && hi.x() >= tile.lo.x() && lo.y() <= tile.hi.y() && hi.y() >= tile.lo.y())
+          lists[k].push_back(static_cast<int>(id));
+      }
     }
   }
 }

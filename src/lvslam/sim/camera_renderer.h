@@ -45,7 +45,12 @@ class CameraRenderer {
 
   const Scenario& scenario_;
   std::vector<Eigen::Vector3d> rays_;  // per pixel, camera frame, unit length
-  std::vector<Tile> tiles_;
+  std::vector<Tile> tiles_;            // row by row of tiles
+  int tile_columns_ = 0;
+  // Bounds of the normalised coordinates over each column and each row of
+  // tiles: a primitive is tested only against the tiles in the columns and
+  // rows its bounds overlap.
+  std::vector<Eigen::Vector2d> column_x_, row_y_;
   cv::Mat vignette_;                   // CV_32F gain per pixel
   double pixel_angle_ = 0.0;
 };

@@ -52,7 +52,10 @@ SimOptions familyOptions(const std::string& name) {
   if (name == "hall16" || name == "blur") {
     SimOptions o = realistic(name, "hall");
     o.speed_scale = 1.6;
-    if (name == "hall16") o.lidar = "vlp16";
+    if (name == "hall16") {
+      o.lidar = "vlp16";
+      o.blur = false;  // a bright hall: a 15 ms shutter or less, its blur not simulated (2 min budget)
+    }
     if (name == "blur") {  // a dim hall: the shutter stays open 37.5 ms
       o.exposure_scale = 2.5;
       o.rolling_shutter = true;
@@ -69,6 +72,7 @@ SimOptions familyOptions(const std::string& name) {
   if (name == "crowd") {
     SimOptions o = realistic(name, "hall");
     o.people = 12;
+    o.blur = false;  // as hall16
     return o;
   }
   if (name == "night") {

@@ -46,8 +46,8 @@ SceneSetup buildCorridorScene(SceneBuilder& scene) {
     }
   }
   // Posters where the robot turns and faces a wall from close by.
-  addPoster(scene, north, length - 135.6, 0.6, 2.5, 1.4, false);
-  addPoster(scene, south, 102.3, 0.6, 2.5, 1.4, false);
+  addPoster(scene, north, length - 136.6, 0.5, 2.2, 1.5, false);  // the U-turn at x 135.7
+  addPoster(scene, south, 102.9, 0.5, 2.0, 1.5, false);            // the U-turn at x 104.3
   const int panel = scene.texture(TextureKind::kPlain, 1.0, 1.0, 1.0, 0.0);
   for (double x = 1.5; x < length; x += 3.0)  // flush light panels
     scene.rect(Eigen::Vector3d(x, 0.5 * width, height - 0.004), Eigen::Matrix3d::Identity(), 0.3, 0.3, panel);

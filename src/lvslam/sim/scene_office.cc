@@ -1,22 +1,25 @@
 #include <cmath>
 
 #include "lvslam/sim/indoor_parts.h"
+#include "lvslam/sim/outdoor_parts.h"
 #include "lvslam/sim/scene_setups.h"
 
 namespace lvslam::sim {
 
 namespace {
 
-// A row of floor-to-ceiling glass panes along a wall line, in mullions.
+// A frameless glass wall (structural glazing): floor-to-ceiling panes butted
+// together, held only by a channel at the floor and the ceiling and by a
+// corner post at each end.
 void addGlassWall(SceneBuilder& scene, const WallFrame& wall, double pane, int glass, int metal) {
   const int panes = static_cast<int>(std::round(wall.length / pane));
   const double w = wall.length / panes;
   for (int i = 0; i < panes; ++i)
-    scene.glassPane(wall.at((i + 0.5) * w, 0.5 * wall.height, 0.0), wall.axes(), 0.5 * w - 0.03,
-                    0.5 * wall.height - 0.05, glass);
-  for (int i = 0; i <= panes; ++i) scene.wallBox(wall, i * w - 0.03, 0.0, {0.06, wall.height, 0.08}, metal);
-  scene.wallBox(wall, 0.0, 0.0, {wall.length, 0.05, 0.08}, metal);                 // sill
-  scene.wallBox(wall, 0.0, wall.height - 0.05, {wall.length, 0.05, 0.08}, metal);  // head
+    scene.glassPane(wall.at((i + 0.5) * w, 0.5 * wall.height, 0.0), wall.axes(), 0.5 * w, 0.5 * wall.height - 0.05,
+                    glass);
+  for (const double s : {0.0, wall.length - 0.06}) scene.wallBox(wall, s, 0.0, {0.06, wall.height, 0.06}, metal);
+  scene.wallBox(wall, 0.0, 0.0, {wall.length, 0.05, 0.05}, metal);                 // floor channel
+  scene.wallBox(wall, 0.0, wall.height - 0.05, {wall.length, 0.05, 0.05}, metal);  // ceiling channel
 }
 
 }  // namespace
@@ -53,8 +56,13 @@ SceneSetup buildAtriumScene(SceneBuilder& scene) {
   const int metal = scene.texture(TextureKind::kPlain, 0.3, 0.1, 1.0, 0.02);
   const int wall = scene.texture(TextureKind::kPlain, 0.75, 0.6, 1.0, 0.03);
   const Eigen::Vector3d centre(0.5 * length, 0.5 * width, 0.0);
-  const int paving = scene.texture(TextureKind::kTiles, 0.5, 0.25, 0.5, 0.08);  // the square outside
+  // Outside: a paved square, trees and the buildings around it (seen through the glass).
+  const int paving = scene.texture(TextureKind::kTiles, 0.5, 0.25, 0.5, 0.08);
   scene.rect(Eigen::Vector3d(0.5 * length, 0.0, -0.002), Eigen::Matrix3d::Identity(), 150.0, 150.0, paving);
+  addBuilding(scene, WallFrame{{-20, -25, 0}, {1, 0, 0}, {0, 1, 0}, 64.0, 12.0}, 12.0, 3);
+  addBuilding(scene, WallFrame{{-18, 30, 0}, {0, -1, 0}, {1, 0, 0}, 55.0, 12.0}, 12.0, 3);
+  addBuilding(scene, WallFrame{{42, -25, 0}, {0, 1, 0}, {-1, 0, 0}, 55.0, 12.0}, 12.0, 3);
+  for (double x = 2.0; x < length; x += 5.0) addTree(scene, {x, -8.0});
   scene.rect(centre + Eigen::Vector3d(0, 2.0, 0), Eigen::Matrix3d::Identity(), 0.5 * length, 0.5 * width + 2.0, floor);
   scene.rect(centre + Eigen::Vector3d(0, 2.0, height), Eigen::Matrix3d::Identity(), 0.5 * length,
              0.5 * width + 2.0, ceiling);

@@ -28,6 +28,18 @@ SceneSetup buildYardScene(SceneBuilder& scene) {
   addBuilding(scene, WallFrame{{-60, 120, 0}, {1, 0, 0}, {0, -1, 0}, 120.0, 14.0}, 14.0, 4);
   addBuilding(scene, WallFrame{{125, 50, 0}, {0, -1, 0}, {-1, 0, 0}, 100.0, 11.0}, 12.0, 3);
   addBuilding(scene, WallFrame{{40, -130, 0}, {-1, 0, 0}, {0, 1, 0}, 90.0, 9.0}, 12.0, 3);
+  // Flat things on the paving, unique where the stones repeat: drain covers,
+  // painted markings, patches of gravel and leaves (no height for the LiDAR).
+  for (int i = 0; i < 90; ++i) {
+    const double a = scene.rng().uniform(0.0, 2.0 * M_PI), r = scene.rng().uniform(0.3, 1.9);
+    const Eigen::Vector2d xy(3.0 + 11.0 * r * std::cos(a), 0.5 + 7.0 * r * std::sin(a));
+    const bool painted = scene.rng().uniform() < 0.4;
+    const int look = painted ? scene.texture(TextureKind::kPoster, 0.85, 0.15, scene.rng().uniform(0.1, 0.25), 0.03)
+                             : scene.texture(TextureKind::kNoise, scene.rng().uniform(0.15, 0.7), 0.1,
+                                             scene.rng().uniform(0.1, 0.4), 0.1);
+    scene.rect(Eigen::Vector3d(xy.x(), xy.y(), 0.002 + 0.0002 * i), yawRotation(scene.rng().uniform(0.0, M_PI)),  // no two coplanar
+               scene.rng().uniform(0.3, 1.2), scene.rng().uniform(0.3, 1.2), look);
+  }
   // A few small things near the drive.
   const int wood = scene.texture(TextureKind::kPlanks, 0.45, 0.2, 0.1, 0.04);
   const int iron = scene.texture(TextureKind::kPlain, 0.15, 0.05, 0.5, 0.02);
