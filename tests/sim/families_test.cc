@@ -59,7 +59,7 @@ TEST(FamilyOptions, ListsEveryFamilyOfTheIssueAndNamesBadOnes) {
   EXPECT_EQ(familyNames().size(), 11u);
   EXPECT_NE(errorMessageOf([] { familyOptions("kitchen"); }).find("--family"), std::string::npos);
   // The distortion is on by default in at least one family; room and gate are the scenarios as they were.
-  EXPECT_TRUE(familyOptions("corridor").distortion);
+  EXPECT_TRUE(familyOptions("yard").distortion);
   SimOptions room = familyOptions("room");
   room.family.clear();
   EXPECT_EQ(room.scenario, "room");

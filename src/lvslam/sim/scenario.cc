@@ -35,7 +35,7 @@ CameraConfig makeCamera(const SimOptions& options, const SceneSetup& setup) {
   camera.start_offset = 0.0127;
   camera.exposure = (options.night ? 3.0 * setup.exposure : setup.exposure) * options.exposure_scale;
   const bool blur = options.blur.value_or(setup.blur_by_default);
-  camera.blur_samples = blur ? 5 : 1;
+  camera.blur_samples = blur ? options.blur_samples : 1;
   // The D435i's colour sensor (OV2740) reads its rows out over about 24 ms.
   if (options.rolling_shutter) camera.line_time = 0.024 / camera.camera.height();
   camera.auto_exposure.enabled = options.auto_exposure;

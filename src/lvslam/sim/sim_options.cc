@@ -31,6 +31,8 @@ void validate(const SimOptions& options) {
                                   "' (expected room, hall, gate, corridor, yard, office or atrium)");
   if (options.lidar != "vlp32c" && options.lidar != "vlp16")
     throw Error("--lidar", "unknown LiDAR '" + options.lidar + "' (expected vlp32c or vlp16)");
+  if (options.blur_samples < 2 || options.blur_samples > 16)
+    throw Error("blur_samples", "must be between 2 and 16 sub-exposures");
   if (options.people < 0 || options.people > kMaxPeople)
     throw Error("--people", "must be between 0 and " + std::to_string(kMaxPeople));
   if (!std::isfinite(options.speed_scale) || options.speed_scale <= 0.0 || options.speed_scale > 3.0)

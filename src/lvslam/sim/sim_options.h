@@ -23,6 +23,7 @@ struct SimOptions {
   std::uint64_t seed = 1;
   bool night = false;
   std::optional<bool> blur;       // motion blur; the scenario decides when unset (on for hall)
+  int blur_samples = 5;           // sub-exposures averaged when blurred
   bool distortion = false;        // radtan lens distortion, rendered and written
   bool walking_person = false;    // a person (moving box) walks through the scene
   int people = 0;                 // people walking on their own paths (at least 1 with walking_person)
