@@ -48,7 +48,8 @@ TEST(AutoExposure, BringsTheBrightnessBackAfterALightingChangeWithTheLag) {
   EXPECT_LE(frames_back, 22);  // (1 - alpha)^n log 4 < log 1.2 for n >= 16 under a linear response
   EXPECT_NEAR(exposure.factor() / settled, 4.0, 1.2);
   // Shutter first, up to its limit, then gain.
-  EXPECT_DOUBLE_EQ(exposure.current().time, std::min(scenario.camera.exposure * exposure.factor(), config.max_exposure));
+  EXPECT_DOUBLE_EQ(exposure.current().time,
+                   std::min(scenario.camera.exposure * exposure.factor(), config.max_exposure));
 }
 
 TEST(AutoExposure, OffKeepsTheBaseExposure) {

@@ -150,7 +150,8 @@ void CameraRenderer::renderInstant(double t, cv::Mat& radiance, cv::Mat* depth) 
           const Eigen::Vector3d& ray = rays_[static_cast<std::size_t>(y) * w + x];
           const Eigen::Vector3d dir = R * ray;
           auto hit = scenario_.world.raycastAmong(lists[k], origin, dir, 1e9, pixel_angle_);
-          for (const int i : people_lists[k]) addPersonHit(scenario_.world, people[i], origin, dir, 1e9, pixel_angle_, hit);
+          for (const int i : people_lists[k])
+            addPersonHit(scenario_.world, people[i], origin, dir, 1e9, pixel_angle_, hit);
           float value = 0.0f, z = 0.0f;
           if (hit) {
             value = static_cast<float>(radianceOf(origin + hit->distance * dir, hit->normal, hit->albedo));

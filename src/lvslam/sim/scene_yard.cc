@@ -37,7 +37,8 @@ SceneSetup buildYardScene(SceneBuilder& scene) {
     const int look = painted ? scene.texture(TextureKind::kPoster, 0.85, 0.15, scene.rng().uniform(0.1, 0.25), 0.03)
                              : scene.texture(TextureKind::kNoise, scene.rng().uniform(0.15, 0.7), 0.1,
                                              scene.rng().uniform(0.1, 0.4), 0.1);
-    scene.rect(Eigen::Vector3d(xy.x(), xy.y(), 0.002 + 0.0002 * i), yawRotation(scene.rng().uniform(0.0, M_PI)),  // no two coplanar
+    // Each a little above the last: no two coplanar.
+    scene.rect(Eigen::Vector3d(xy.x(), xy.y(), 0.002 + 0.0002 * i), yawRotation(scene.rng().uniform(0.0, M_PI)),
                scene.rng().uniform(0.3, 1.2), scene.rng().uniform(0.3, 1.2), look);
   }
   // A few small things near the drive.
