@@ -60,7 +60,7 @@ std::vector<Column> columns(bool ablations) {
   out.push_back(ablationColumn("fused w/o fusion lines", "fusion-lines"));
   // lvslam's additions to the paper (docs/visual-subsystem.md, docs/architecture.md).
   out.push_back(ablationColumn("fused w/o keypoint depths", "keypoint-depths"));
-  out.push_back(ablationColumn("fused, paper's output", "output-fusion"));
+  out.push_back(ablationColumn("fused, paper's output", "paper-output"));
   return out;
 }
 

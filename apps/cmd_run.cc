@@ -29,6 +29,7 @@ struct RunArgs {
   std::string out_dir;
   std::string config_path;
   bool deterministic = false;
+  bool realtime = false;
   bool mode_given = false;  // --mode on the command line
   std::vector<std::string> ablations;
 };
@@ -61,6 +62,7 @@ system::SystemConfig loadConfig(const RunArgs& args) {
       args.config_path.empty() ? system::SystemConfig{} : system::loadSystemConfig(YamlConfig::loadFile(args.config_path));
   config.mode = system::parseRunMode(args.mode, "--mode");
   config.deterministic = args.deterministic;
+  config.realtime = args.realtime;
   for (const std::string& name : args.ablations) system::applyAblation(config, name, "--ablate");
   return config;
 }
@@ -80,13 +82,17 @@ int runRun(RunArgs args) {
                                 images, scans, wall > 0.0 ? (t - *t0) / wall : 0.0));
   });
   progress.finish();
-  system::writeRunOutputs(args.out_dir, run.records, run.output, run.summary, run.accuracy, !args.deterministic);
+  system::writeRunOutputs(args.out_dir, run.records, run.output, run.summary, {run.accuracy, run.accuracy_refined},
+                          !args.deterministic);
   std::cout << system::formatRunSummary(run.summary, run.output);
-  std::cout << fmt::format("wrote {}/{{trajectory.tum ({}, {} poses), stats.json, map.ply ({} points), lines.ply ({} "
-                           "lines)}}\n",
+  std::cout << fmt::format("wrote {}/{{trajectory.tum (online {}, {} poses), trajectory_refined.tum (offline, {} poses), "
+                           "stats.json, map.ply ({} points), lines.ply ({} lines)}}\n",
                            args.out_dir, run.output.trajectory_is_camera ? "T_world_camera" : "T_world_lidar",
-                           run.output.trajectory.size(), run.records.lidar_map.size(), run.output.lines_world.size());
-  if (run.accuracy) std::cout << eval::formatSummary(*run.accuracy);
+                           run.output.trajectory.size(), run.output.trajectory_refined.size(),
+                           run.records.lidar_map.size(), run.output.lines_world.size());
+  if (run.accuracy) std::cout << "online (trajectory.tum):\n" << eval::formatSummary(*run.accuracy);
+  if (run.accuracy_refined)
+    std::cout << "offline refinement (trajectory_refined.tum):\n" << eval::formatSummary(*run.accuracy_refined);
   return 0;
 }
 
@@ -117,6 +123,9 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
                   "Switch off one of the paper's contributions (repeatable): direction-residual, "
                   "lidar-direction-refinement, fusion-lines")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(system::kAblations), std::end(system::kAblations))));
+  cmd->add_flag("--realtime", args->realtime,
+                "Read the recording at the pace of its time stamps, as a live robot delivers it (the online "
+                "output's latency as live); without it the run goes as fast as the machine does");
   cmd->add_flag("--deterministic", args->deterministic,
                 "One thread in a fixed order and no wall-clock figures in stats.json: byte-identical output for the "
                 "same input");

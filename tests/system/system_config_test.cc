@@ -43,8 +43,6 @@ TEST(SystemConfig, ReadsEverySection) {
       "  max_brightness: 230\n"
       "  min_contrast: 4.5\n"
       "  frames_to_recover: 6\n"
-      "  max_disagreement_m: 0.05\n"
-      "  max_disagreement_deg: 1.5\n"
       "  rejoin_step_m: 0.004\n"
       "  rejoin_step_deg: 0.1\n"
       "system:\n"
@@ -68,8 +66,6 @@ TEST(SystemConfig, ReadsEverySection) {
   EXPECT_DOUBLE_EQ(c.detection.max_brightness, 230.0);
   EXPECT_DOUBLE_EQ(c.detection.min_contrast, 4.5);
   EXPECT_EQ(c.detection.frames_to_recover, 6);
-  EXPECT_DOUBLE_EQ(c.detection.max_disagreement_m, 0.05);
-  EXPECT_DOUBLE_EQ(c.detection.max_disagreement_deg, 1.5);
   EXPECT_DOUBLE_EQ(c.detection.rejoin_step_m, 0.004);
   EXPECT_DOUBLE_EQ(c.detection.rejoin_step_deg, 0.1);
   EXPECT_FALSE(c.fusion_lines_in_tracking);
@@ -80,51 +76,37 @@ TEST(SystemConfig, ReadsEverySection) {
   EXPECT_DOUBLE_EQ(c.map_voxel, 0.3);
 }
 
-TEST(SystemConfig, OutputFusionKeysAreReadAndChecked) {
+TEST(SystemConfig, EstimatorKeysAreReadAndChecked) {
   const SystemConfig c = load(
-      "output_fusion:\n"
-      "  enabled: false\n"
-      "  lidar_sigma_m: 0.01\n"
-      "  lidar_sigma_deg: 0.3\n"
+      "estimator:\n"
+      "  window_s: 2.0\n"
+      "  visual_pixel_sigma: 4\n"
       "  lidar_drift_m: 0.004\n"
       "  lidar_drift_deg: 0.02\n"
-      "  visual_pixel_sigma: 4\n"
-      "  max_step_m: 0.005\n"
-      "  max_step_deg: 0.2\n"
-      "  band_pass_gain: 0.4\n"
-      "  band_pass_gain_vertical: 0.6\n"
-      "  band_pass_sigma_s: 0.4\n"
-      "  band_pass_sigma_fast_s: 0.05\n");
-  EXPECT_FALSE(c.output_fusion.enabled);
-  EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_m, 0.01);
-  EXPECT_DOUBLE_EQ(c.output_fusion.lidar_sigma_deg, 0.3);
-  EXPECT_DOUBLE_EQ(c.output_fusion.lidar_drift_m, 0.004);
-  EXPECT_DOUBLE_EQ(c.output_fusion.lidar_drift_deg, 0.02);
-  EXPECT_DOUBLE_EQ(c.output_fusion.visual_pixel_sigma, 4.0);
-  EXPECT_DOUBLE_EQ(c.output_fusion.max_step_m, 0.005);
-  EXPECT_DOUBLE_EQ(c.output_fusion.max_step_deg, 0.2);
-  EXPECT_DOUBLE_EQ(c.output_fusion.band_pass.gain, 0.4);
-  EXPECT_DOUBLE_EQ(c.output_fusion.band_pass.gain_vertical, 0.6);
-  EXPECT_DOUBLE_EQ(c.output_fusion.band_pass.sigma_s, 0.4);
-  EXPECT_DOUBLE_EQ(c.output_fusion.band_pass.sigma_fast_s, 0.05);
-  EXPECT_THROW(load("output_fusion:\n  band_pass_gain: 1.5\n"), lvslam::Error);
-  EXPECT_THROW(load("output_fusion:\n  band_pass_gain_vertical: -0.1\n"), lvslam::Error);
-  EXPECT_THROW(load("output_fusion:\n  band_pass_sigma_s: 0\n"), lvslam::Error);
-  EXPECT_THROW(load("output_fusion:\n  band_pass_sigma_fast_s: -0.01\n"), lvslam::Error);
-  EXPECT_THROW(load("output_fusion:\n  band_pass_sigma_s: 0.1\n  band_pass_sigma_fast_s: 0.1\n"), lvslam::Error);
-  EXPECT_THROW(load("output_fusion:\n  high_pass_gain: 0.4\n"), lvslam::Error);  // the keys' old name
-  EXPECT_DOUBLE_EQ(load("output_fusion:\n  band_pass_gain: 0\n").output_fusion.band_pass.gain, 0.0);  // off
-  EXPECT_TRUE(load("{}").output_fusion.enabled);
-  EXPECT_THROW(load("output_fusion:\n  lidar_sigma_m: 0\n"), lvslam::Error);
-  EXPECT_THROW(load("output_fusion:\n  visual_pixel_sigma: -1\n"), lvslam::Error);
-  EXPECT_THROW(load("output_fusion:\n  lidar_drift_m: -0.001\n"), lvslam::Error);
-  EXPECT_DOUBLE_EQ(load("output_fusion:\n  lidar_drift_deg: 0\n").output_fusion.lidar_drift_deg, 0.0);  // off
-  EXPECT_THROW(load("output_fusion:\n  max_step_deg: .nan\n"), lvslam::Error);
-  const std::string typo = errorMessageOf([] { load("output_fusion:\n  visual_pixel_sigmas: 3\n"); });
+      "  motion_accel: 3.0\n"
+      "  motion_angular_accel_deg: 45.0\n"
+      "  huber_delta: 2.0\n"
+      "  max_iterations: 5\n");
+  EXPECT_DOUBLE_EQ(c.estimator.window_s, 2.0);
+  EXPECT_DOUBLE_EQ(c.estimator.visual_pixel_sigma, 4.0);
+  EXPECT_DOUBLE_EQ(c.estimator.lidar_drift_m, 0.004);
+  EXPECT_DOUBLE_EQ(c.estimator.lidar_drift_deg, 0.02);
+  EXPECT_DOUBLE_EQ(c.estimator.motion_accel, 3.0);
+  EXPECT_DOUBLE_EQ(c.estimator.motion_angular_accel_deg, 45.0);
+  EXPECT_DOUBLE_EQ(c.estimator.huber_delta, 2.0);
+  EXPECT_EQ(c.estimator.max_iterations, 5);
+  EXPECT_THROW(load("estimator:\n  visual_pixel_sigma: -1\n"), lvslam::Error);
+  EXPECT_THROW(load("estimator:\n  lidar_drift_m: -0.001\n"), lvslam::Error);
+  EXPECT_THROW(load("estimator:\n  motion_accel: 0\n"), lvslam::Error);
+  EXPECT_THROW(load("estimator:\n  window_s: .nan\n"), lvslam::Error);
+  EXPECT_DOUBLE_EQ(load("estimator:\n  lidar_drift_deg: 0\n").estimator.lidar_drift_deg, 0.0);  // off
+  // The superseded output fusion and its keys are gone.
+  EXPECT_THROW(load("output_fusion:\n  enabled: true\n"), lvslam::Error);
+  EXPECT_THROW(load("detection:\n  max_disagreement_m: 0.02\n"), lvslam::Error);
+  const std::string typo = errorMessageOf([] { load("estimator:\n  visual_pixel_sigmas: 3\n"); });
   EXPECT_NE(typo.find("visual_pixel_sigmas"), std::string::npos) << typo;
 }
 
-// Each ablation switches off exactly its own contribution.
 TEST(SystemConfig, EachAblationSwitchesOffItsContribution) {
   const auto ablated = [](const char* name) {
     SystemConfig c;
@@ -135,8 +117,9 @@ TEST(SystemConfig, EachAblationSwitchesOffItsContribution) {
   EXPECT_FALSE(ablated("lidar-direction-refinement").lidar_direction_refinement);
   EXPECT_FALSE(ablated("fusion-lines").fusion_lines_in_tracking);
   EXPECT_FALSE(ablated("keypoint-depths").visual.visual.use_keypoint_depths);
-  const SystemConfig paper_output = ablated("output-fusion");
-  EXPECT_FALSE(paper_output.output_fusion.enabled);
+  const SystemConfig paper_output = ablated("paper-output");
+  EXPECT_TRUE(paper_output.paper_output);
+  EXPECT_FALSE(SystemConfig{}.paper_output);
   EXPECT_TRUE(paper_output.fusion_lines_in_tracking);
   EXPECT_EQ(std::size(kAblations), 5u);
   const std::string message = errorMessageOf([] {
@@ -144,7 +127,7 @@ TEST(SystemConfig, EachAblationSwitchesOffItsContribution) {
     applyAblation(c, "output", "--ablate");
   });
   EXPECT_NE(message.find("--ablate"), std::string::npos) << message;
-  EXPECT_NE(message.find("output-fusion"), std::string::npos) << message;
+  EXPECT_NE(message.find("paper-output"), std::string::npos) << message;
 }
 
 TEST(SystemConfig, AMisspeltSectionIsAnErrorNamingIt) {

@@ -117,6 +117,7 @@ OdometryResult LidarOdometry::registerScan() {
     if (recent_inlier_ratios_.size() > kInlierRatioHistory) recent_inlier_ratios_.pop_front();
     if (!time_jump_) threshold_.update(correction);
     result = finish(icp.degenerate ? OdometryStatus::kDegenerate : OdometryStatus::kTracking, icp.T_world_lidar);
+    result.information = icp.information;
   }
   result.correspondences = icp.correspondences;
   result.iterations = icp.iterations;

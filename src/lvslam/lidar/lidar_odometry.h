@@ -40,6 +40,9 @@ struct OdometryResult {
   std::size_t correspondences = 0;
   int iterations = 0;
   double condition = 0.0;  // smallest / largest eigenvalue of the scaled normal matrix
+  // Information of T_world_lidar against the local map (IcpResult::information);
+  // zero unless the scan was registered (tracking or degenerate).
+  Matrix6d information = Matrix6d::Zero();
 };
 
 class LidarOdometry {

@@ -32,7 +32,7 @@ void addResidual(NormalEquations& eq, const Eigen::Matrix<double, Rows, 3>& A, c
                  double class_weight) {
   const Eigen::Matrix<double, Rows, 1> r = A * (q - m);
   const Eigen::Matrix<double, Rows, 6> J = A * dq;
-  // Geman-McClure weight (kiss-icp uses the same kernel).
+  // Geman-McClure weight, (k^2 / (k^2 + r^2))^2 (MULLS; kiss-icp's differs, k^2 / (k + r^2)^2).
   const double r_sq = r.squaredNorm();
   const double k_sq = kernel * kernel;
   const double w = class_weight * (k_sq / (k_sq + r_sq)) * (k_sq / (k_sq + r_sq));
@@ -109,33 +109,64 @@ double motionBetween(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
   return delta.translation().norm() + kRotationScale * rotationAngle(delta);
 }
 
+// The scaled normal matrix's eigen decomposition (ascending), with the
+// indices of the directions that carry information.
+struct ScaledEigen {
+  Vector6d scale;
+  Eigen::SelfAdjointEigenSolver<Matrix6d> solver;
+  double condition = 0.0;
+  bool degenerate = false;
+  bool usable(int i) const { return !(solver.eigenvalues()(i) < ratio * solver.eigenvalues()(5)); }
+  double ratio = 0.0;
+};
+
+ScaledEigen scaledEigen(const Matrix6d& H_raw, double degeneracy_ratio) {
+  ScaledEigen e;
+  e.scale << 1, 1, 1, 1.0 / kRotationScale, 1.0 / kRotationScale, 1.0 / kRotationScale;
+  e.ratio = degeneracy_ratio;
+  e.solver.compute(e.scale.asDiagonal() * H_raw * e.scale.asDiagonal());
+  const Vector6d lambda = e.solver.eigenvalues();
+  const double largest = lambda(5);
+  e.condition = largest > 0 ? lambda(0) / largest : 0.0;
+  e.degenerate = !(largest > 0) || !std::isfinite(largest);
+  for (int i = 0; i < 6 && !e.degenerate; ++i) e.degenerate = !e.usable(i);
+  return e;
+}
+
 }  // namespace
 
 Vector6d solveWellConditioned(const NormalEquations& eq, double degeneracy_ratio, bool& degenerate,
                               double& condition) {
-  Vector6d scale;
-  scale << 1, 1, 1, 1.0 / kRotationScale, 1.0 / kRotationScale, 1.0 / kRotationScale;
-  const Matrix6d H = scale.asDiagonal() * eq.H * scale.asDiagonal();
-  const Vector6d b = scale.asDiagonal() * eq.b;
-  Eigen::SelfAdjointEigenSolver<Matrix6d> solver(H);
-  const Vector6d lambda = solver.eigenvalues();  // ascending
-  const double largest = lambda(5);
-  degenerate = false;
-  condition = largest > 0 ? lambda(0) / largest : 0.0;
-  if (!(largest > 0) || !std::isfinite(largest)) {
-    degenerate = true;
-    return Vector6d::Zero();
-  }
+  const ScaledEigen e = scaledEigen(eq.H, degeneracy_ratio);
+  degenerate = e.degenerate;
+  condition = e.condition;
+  const double largest = e.solver.eigenvalues()(5);
+  if (!(largest > 0) || !std::isfinite(largest)) return Vector6d::Zero();
+  const Vector6d b = e.scale.asDiagonal() * eq.b;
   Vector6d x_scaled = Vector6d::Zero();
   for (int i = 0; i < 6; ++i) {
-    if (lambda(i) < degeneracy_ratio * largest) {
-      degenerate = true;
-      continue;
-    }
-    const Vector6d v = solver.eigenvectors().col(i);
-    x_scaled -= v * (v.dot(b) / lambda(i));
+    if (!e.usable(i)) continue;
+    const Vector6d v = e.solver.eigenvectors().col(i);
+    x_scaled -= v * (v.dot(b) / e.solver.eigenvalues()(i));
   }
-  return scale.asDiagonal() * x_scaled;
+  return e.scale.asDiagonal() * x_scaled;
+}
+
+Matrix6d wellConditionedInformation(const NormalEquations& eq, double degeneracy_ratio) {
+  if (eq.count == 0 || !(eq.squared_error > 0)) return Matrix6d::Zero();
+  const ScaledEigen e = scaledEigen(eq.H, degeneracy_ratio);
+  const double largest = e.solver.eigenvalues()(5);
+  if (!(largest > 0) || !std::isfinite(largest)) return Matrix6d::Zero();
+  Matrix6d H_scaled = Matrix6d::Zero();
+  for (int i = 0; i < 6; ++i) {
+    if (!e.usable(i)) continue;
+    const Vector6d v = e.solver.eigenvectors().col(i);
+    H_scaled += e.solver.eigenvalues()(i) * v * v.transpose();
+  }
+  // Undo the scaling (H = S^-1 H_scaled S^-1) and weigh by the residuals' own variance.
+  const Vector6d inverse_scale = e.scale.cwiseInverse();
+  const double variance = eq.squared_error / static_cast<double>(eq.count);
+  return inverse_scale.asDiagonal() * H_scaled * inverse_scale.asDiagonal() / variance;
 }
 
 IcpResult registerMultiMetric(const std::vector<FeaturePoint>& source, const LocalMap& map,
@@ -153,6 +184,7 @@ IcpResult registerMultiMetric(const std::vector<FeaturePoint>& source, const Loc
       T_associated = result.T_world_lidar;
     }
     const NormalEquations eq = buildNormalEquations(source, matches, result.T_world_lidar, threshold, config);
+    result.information = wellConditionedInformation(eq, config.degeneracy_ratio);
     result.iterations = iteration + 1;
     result.correspondences = eq.count;
     result.rms_residual = eq.count > 0 ? std::sqrt(eq.squared_error / eq.count) : 0.0;

@@ -23,6 +23,10 @@ struct IcpResult {
   bool degenerate = false;      // some direction of the normal matrix had no information
   double condition = 0.0;       // smallest / largest eigenvalue of the scaled normal matrix
   double rms_residual = 0.0;    // metres, last iteration
+  // The pose's information (body-frame perturbation, (rho, phi)) from the
+  // last iteration's normal equations over the residuals' own variance
+  // (Censi's J^T J / sigma^2 at the optimum); degenerate directions carry none.
+  Matrix6d information = Matrix6d::Zero();
 };
 
 // source: feature points in the LiDAR frame; threshold: largest
@@ -44,5 +48,9 @@ struct NormalEquations {
 // remapping); `degenerate` tells whether any direction was left out.
 Vector6d solveWellConditioned(const NormalEquations& eq, double degeneracy_ratio, bool& degenerate,
                               double& condition);
+
+// H / sigma^2 restricted to the directions solveWellConditioned uses (the
+// others get no information), sigma^2 the mean squared residual.
+Matrix6d wellConditionedInformation(const NormalEquations& eq, double degeneracy_ratio);
 
 }  // namespace lvslam::lidar

@@ -4,7 +4,7 @@
 
 namespace lvslam::system {
 
-std::string DetectionModule::problemWith(const VisualHealth& h, const std::optional<MotionDisagreement>& d) const {
+std::string DetectionModule::problemWith(const VisualHealth& h) const {
   const DetectionConfig& c = config_;
   // Image first: a dark or washed-out image explains everything after it.
   if (h.brightness < c.min_brightness) return fmt::format("image too dark (mean {:.0f})", h.brightness);
@@ -19,13 +19,11 @@ std::string DetectionModule::problemWith(const VisualHealth& h, const std::optio
     return fmt::format("{} tracked lines (< {})", h.tracked_lines, c.min_tracked_lines);
   if (h.inlier_ratio < c.min_inlier_ratio)
     return fmt::format("inlier ratio {:.2f} (< {:.2f})", h.inlier_ratio, c.min_inlier_ratio);
-  if (d && (d->translation_m > c.max_disagreement_m || d->rotation_deg > c.max_disagreement_deg))
-    return fmt::format("visual and LiDAR motion disagree ({:.3f} m, {:.2f} deg)", d->translation_m, d->rotation_deg);
   return "";
 }
 
-OutputSource DetectionModule::update(const VisualHealth& health, const std::optional<MotionDisagreement>& disagreement) {
-  last_problem_ = problemWith(health, disagreement);
+OutputSource DetectionModule::update(const VisualHealth& health) {
+  last_problem_ = problemWith(health);
   if (!last_problem_.empty()) {
     healthy_streak_ = 0;
     if (source_ == OutputSource::kVisual) {
@@ -35,11 +33,11 @@ OutputSource DetectionModule::update(const VisualHealth& health, const std::opti
     return source_;
   }
   ++healthy_streak_;
-  // Returning needs a streak with known, agreeing motion, not one good frame.
-  if (source_ == OutputSource::kLidar && disagreement && healthy_streak_ >= config_.frames_to_recover) {
+  // Returning needs a streak of healthy frames, not one good frame.
+  if (source_ == OutputSource::kLidar && healthy_streak_ >= config_.frames_to_recover) {
     source_ = OutputSource::kVisual;
     switches_.push_back({health.t, OutputSource::kVisual,
-                         fmt::format("visual tracking healthy for {} frames and agrees with the LiDAR", healthy_streak_)});
+                         fmt::format("visual tracking healthy for {} frames", healthy_streak_)});
   }
   return source_;
 }

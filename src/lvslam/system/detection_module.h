@@ -1,9 +1,11 @@
 #pragma once
 // The detection module (paper, "System Overview"): judges the visual
-// subsystem's health every camera frame and decides whose odometry the
-// system outputs. It falls back to the LiDAR at once when vision fails and
-// returns to vision only after it has been healthy for a while and its
-// motion agrees with the LiDAR's.
+// subsystem's health every camera frame from its own figures (tracking
+// state, tracked features, inliers, image brightness and contrast, metric
+// scale) and decides whether its estimate may enter the output. It drops
+// vision at once when it fails and admits it again only after it has been
+// healthy for a while. Whether vision is *better* than the LiDAR is never
+// decided here: the online estimator weighs both by their own uncertainty.
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,13 +25,6 @@ struct VisualHealth {
   bool metric = true;       // the visual map's scale came from LiDAR depth
 };
 
-// How far the visual and LiDAR relative motions between the same two camera
-// frames differ (both metric, in the camera frame).
-struct MotionDisagreement {
-  double translation_m = 0.0;
-  double rotation_deg = 0.0;
-};
-
 struct DetectionConfig {
   int min_tracked_points = 40;
   int min_tracked_lines = 0;
@@ -37,8 +32,6 @@ struct DetectionConfig {
   double min_brightness = 20.0, max_brightness = 245.0;
   double min_contrast = 8.0;
   int frames_to_recover = 10;           // consecutive healthy frames before vision is believed again
-  double max_disagreement_m = 0.02;     // per frame, between visual and LiDAR motion
-  double max_disagreement_deg = 0.5;
   // Back in a visual map after the LiDAR, the output rejoins the map's first
   // anchor by at most this much per frame (system/output_trajectory.h).
   double rejoin_step_m = 0.002;
@@ -57,8 +50,8 @@ class DetectionModule {
  public:
   explicit DetectionModule(const DetectionConfig& config) : config_(config) {}
 
-  // One camera frame; `disagreement` is absent when either motion is unknown.
-  OutputSource update(const VisualHealth& health, const std::optional<MotionDisagreement>& disagreement);
+  // One camera frame: kVisual while vision is admitted.
+  OutputSource update(const VisualHealth& health);
 
   OutputSource source() const { return source_; }
   const std::vector<SwitchEvent>& switches() const { return switches_; }
@@ -66,7 +59,7 @@ class DetectionModule {
   const std::string& lastProblem() const { return last_problem_; }
 
  private:
-  std::string problemWith(const VisualHealth& h, const std::optional<MotionDisagreement>& d) const;
+  std::string problemWith(const VisualHealth& h) const;
 
   DetectionConfig config_;
   OutputSource source_ = OutputSource::kLidar;  // until vision has proven itself

@@ -35,4 +35,14 @@ void relocateInFinalMaps(const visual::VisualSlam& slam, std::vector<VisualFrame
         frame.T_world_camera_final = *T;
 }
 
+Eigen::Isometry3d visualPoseOf(const VisualFrameRecord& v, bool final_poses) {
+  return final_poses && v.T_world_camera_final ? *v.T_world_camera_final : v.result.T_world_camera;
+}
+
+StampedPose initialReferenceOf(const VisualFrameRecord& v, bool final_poses) {
+  StampedPose first = *v.result.initial_reference;
+  if (final_poses && v.initial_reference_final) first.T_world_frame = *v.initial_reference_final;
+  return first;
+}
+
 }  // namespace lvslam::system

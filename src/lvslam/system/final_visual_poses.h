@@ -26,4 +26,10 @@ void placeOnFinalKeyframes(const std::vector<visual::VisualMap>& retired, const 
 // few of whose landmarks remain keeps its placed pose.
 void relocateInFinalMaps(const visual::VisualSlam& slam, std::vector<VisualFrameRecord>& frames);
 
+// A frame's visual pose in its map: on the final keyframes when asked and
+// known, else as tracked; and likewise the map's first view (a frame with
+// result.initial_reference only).
+Eigen::Isometry3d visualPoseOf(const VisualFrameRecord& v, bool final_poses);
+StampedPose initialReferenceOf(const VisualFrameRecord& v, bool final_poses);
+
 }  // namespace lvslam::system

@@ -64,6 +64,9 @@ struct LidarFrameRecord {
   double t = 0.0;
   std::optional<Eigen::Isometry3d> T_odom_lidar;  // after the scan around t was registered
   bool pose_reliable = false;  // interpolated between two scans registered without loss
+  // Of T_odom_lidar: the information of the later of those scans' registration
+  // (lidar::OdometryResult::information, body-frame perturbation).
+  Matrix6d information = Matrix6d::Zero();
   std::vector<CameraLine> fusion_lines;
   std::size_t lidar_features = 0;   // accumulated features the fusion framework saw
   std::size_t lidar_points_refined = 0;  // linear points given d_v_mean

@@ -49,25 +49,49 @@ FusionAnswer LidarWorker::addFrame(double t, const VisualFrameFeatures& features
 
 void LidarWorker::finish() {
   registerPending();
+  frames_provisional_.clear();  // no later sweep: their within-sweep pose stands
   poseWaitingFrames(true, false);
 }
 
-// Frames between two registered scans are interpolated between their poses;
-// at the end, frames after the last scan are extrapolated with the LiDAR
-// subsystem's constant-velocity motion.
+// A frame is posed as soon as the sweep covering its time is registered,
+// by the registered pose and the sweep's motion (what the deskew uses): the
+// online output goes on from there. When the next sweep is registered too,
+// the frame's pose is interpolated between the two, which is better and
+// replaces it in the record (for the estimator's window and the offline
+// refinement; the online output already out is not revised). At the end,
+// frames after the last sweep are extrapolated with the constant velocity.
 void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable) {
   if (scan_trajectory_.empty()) return;
   const StampedPose& last = scan_trajectory_.back();
+  const double sweep = scan_trajectory_.size() >= 2 ? last.t - scan_trajectory_[scan_trajectory_.size() - 2].t : 0.0;
+  const auto pose = [&](std::size_t index, const Eigen::Isometry3d& T_odom_lidar) {
+    LidarFrameRecord& frame = frames_[index];
+    frame.T_odom_lidar = T_odom_lidar;
+    frame.pose_reliable = reliable;
+    frame.information = last_information_;
+    if (on_frame_posed_) on_frame_posed_(index, frame);
+  };
+  std::vector<std::size_t> still_provisional;
+  for (const std::size_t index : frames_provisional_) {
+    const LidarFrameRecord& frame = frames_[index];
+    if (frame.t > last.t || scan_trajectory_.size() < 2) {
+      still_provisional.push_back(index);
+      continue;
+    }
+    const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
+    pose(index, interpolateAtTime(frame.t, before.t, before.T_world_frame, last.t, last.T_world_frame));
+    if (reliable && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frames_[index].T_odom_lidar * *T_lidar_camera_});
+  }
+  frames_provisional_ = std::move(still_provisional);
   std::vector<std::size_t> still_waiting;
   for (const std::size_t index : frames_waiting_) {
-    LidarFrameRecord& frame = frames_[index];
-    if (frame.t <= last.t && scan_trajectory_.size() >= 2) {
-      const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
-      frame.T_odom_lidar = interpolateAtTime(frame.t, before.t, before.T_world_frame, last.t, last.T_world_frame);
-      frame.pose_reliable = reliable;
-      if (reliable && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frame.T_odom_lidar * *T_lidar_camera_});
-    } else if (frame.t <= last.t || extrapolate) {
-      frame.T_odom_lidar = odometry_.poseAt(frame.t);
+    const double t = frames_[index].t;
+    if (t <= last.t + sweep && sweep > 0.0) {
+      pose(index, odometry_.poseAt(t));
+      frames_provisional_.push_back(index);
+    } else if (extrapolate) {
+      pose(index, odometry_.poseAt(t));
+      frames_[index].pose_reliable = false;
     } else {
       still_waiting.push_back(index);
     }
@@ -90,6 +114,7 @@ void LidarWorker::registerPending() {
   record.register_ms = watch.ms();
   scans_.push_back(record);
   if (result.status == lidar::OdometryStatus::kRejected) return;  // the frames wait for the next scan
+  last_information_ = result.information;
   scan_trajectory_.push_back({result.timestamp, result.T_world_lidar});
   const bool lost = result.status == lidar::OdometryStatus::kLost;
   if (!lost) map_.add(odometry_.currentFrame());

@@ -4,9 +4,11 @@
 // Fig. 2). Scans and camera frames arrive in time order; a scan is
 // registered when the next one arrives (or at finish()), after the fusion
 // framework has seen every camera frame of its sweep and refined its linear
-// points. Each camera frame gets the LiDAR pose at its time once the scans
-// before and after it are registered; in fused mode that pose, in the camera
-// frame, goes back to the visual side with a later frame's answer.
+// points. Each camera frame gets the LiDAR pose at its time once the sweep
+// covering that time is registered, and a better one interpolated between
+// two sweeps once the next is; in fused mode that one, in the camera frame,
+// goes back to the visual side with a later frame's answer.
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -29,8 +31,18 @@ class LidarWorker {
   // the fusion framework: fusion lines (camera frame at t) and LiDAR depth
   // for the keyframe keypoints come back.
   FusionAnswer addFrame(double t, const VisualFrameFeatures& features);
+  // The sweep of the last scan has ended (every camera frame of it was
+  // added): registers it now rather than when the next scan arrives.
+  void endSweep() { registerPending(); }
   // Registers the last scan: call once after the last scan and frame.
   void finish();
+
+  // Called (on this worker's thread) when a frame's LiDAR pose becomes known
+  // (within its sweep), and again when it is interpolated between that sweep
+  // and the next, with the frame's index: the online output goes on from
+  // the first call; the second improves the estimator's window.
+  using FramePosed = std::function<void(std::size_t index, const LidarFrameRecord& record)>;
+  void onFramePosed(FramePosed callback) { on_frame_posed_ = std::move(callback); }
 
   const std::vector<ScanRecord>& scans() const { return scans_; }
   const std::vector<LidarFrameRecord>& frames() const { return frames_; }
@@ -48,11 +60,14 @@ class LidarWorker {
   LidarMapExport map_;
   bool scan_pending_ = false;
   double pending_prepare_ms_ = 0.0;
-  std::vector<std::size_t> frames_waiting_;  // frames whose pose needs the pending scan
+  std::vector<std::size_t> frames_waiting_;      // frames whose pose needs the pending scan
+  std::vector<std::size_t> frames_provisional_;  // posed within their sweep, to be interpolated
   // Fused mode with visual.lidar_pose_priors: camera poses go to the visual side.
   std::optional<Eigen::Isometry3d> T_lidar_camera_;
   Trajectory new_camera_poses_;                      // for the next answer
   bool previous_scan_lost_ = false;
+  Matrix6d last_information_ = Matrix6d::Zero();  // of the last registered scan
+  FramePosed on_frame_posed_;
   std::vector<ScanRecord> scans_;
   std::vector<LidarFrameRecord> frames_;
   Trajectory scan_trajectory_;

@@ -14,12 +14,13 @@ Trajectory transformed(const Trajectory& trajectory, const Eigen::Isometry3d& T_
 
 }  // namespace
 
-std::optional<eval::EvalResult> evaluateOutput(const Recording& recording, const SystemOutput& output) {
-  if (!recording.ground_truth || output.trajectory.size() < eval::kMinAssociatedPairs) return std::nullopt;
+std::optional<eval::EvalResult> evaluateOutput(const Recording& recording, const SystemOutput& output,
+                                               const Trajectory& trajectory) {
+  if (!recording.ground_truth || trajectory.size() < eval::kMinAssociatedPairs) return std::nullopt;
   const bool gt_is_camera = recording.ground_truth_frame == GroundTruthFrame::kCamera;
   const Eigen::Isometry3d T_camera_lidar = recording.source->calibration().T_camera_lidar;
   // Compare like with like: the estimate in the frame the ground truth gives.
-  Trajectory estimate = output.trajectory;
+  Trajectory estimate = trajectory;
   if (output.trajectory_is_camera && !gt_is_camera) estimate = transformed(estimate, T_camera_lidar);
   if (!output.trajectory_is_camera && gt_is_camera) estimate = transformed(estimate, T_camera_lidar.inverse());
   eval::EvalOptions options;
@@ -36,7 +37,8 @@ RunResult runRecording(Recording& recording, const SystemConfig& config, const P
   run.output = assembleOutput(run.records, config, recording.source->calibration().T_camera_lidar);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.summary = summarize(run.records, run.output, config.mode, wall);
-  run.accuracy = evaluateOutput(recording, run.output);
+  run.accuracy = evaluateOutput(recording, run.output, run.output.trajectory);
+  run.accuracy_refined = evaluateOutput(recording, run.output, run.output.trajectory_refined);
   return run;
 }
 

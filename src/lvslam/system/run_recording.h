@@ -17,13 +17,16 @@ struct RunResult {
   PipelineRecords records;
   SystemOutput output;
   RunSummary summary;
-  std::optional<eval::EvalResult> accuracy;
+  std::optional<eval::EvalResult> accuracy;          // of the online trajectory
+  std::optional<eval::EvalResult> accuracy_refined;  // of the offline refinement
 };
 
 RunResult runRecording(Recording& recording, const SystemConfig& config, const ProgressCallback& progress = {});
 
-// The accuracy of an output against the recording's ground truth; none
-// without ground truth or with too few poses to align.
-std::optional<eval::EvalResult> evaluateOutput(const Recording& recording, const SystemOutput& output);
+// The accuracy of one of an output's trajectories (its online or its
+// refined one) against the recording's ground truth; none without ground
+// truth or with too few poses to align.
+std::optional<eval::EvalResult> evaluateOutput(const Recording& recording, const SystemOutput& output,
+                                               const Trajectory& trajectory);
 
 }  // namespace lvslam::system

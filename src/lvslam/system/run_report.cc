@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
 #include <set>
 
 #include <fmt/format.h>
@@ -52,6 +53,15 @@ std::string frameJson(const PipelineRecords& records, const SystemOutput& output
   o.addNumber("t", f.t).addString("source", sourceName(f.source)).addRaw("pose", f.T_world_camera ? "true" : "false");
   if (!f.problem.empty()) o.addString("problem", f.problem);
   if (f.fused) o.addRaw("fused_with_lidar", "true");
+  if (f.visual_chi_square_per_dof >= 0.0) o.addNumber("visual_chi2_per_dof", f.visual_chi_square_per_dof);
+  if (!f.gated.empty()) {
+    std::vector<std::string> gated;
+    for (const GateEvent& g : f.gated)
+      gated.push_back(JsonObject().addString("factor", factorSourceName(g.source)).addNumber("chi2", g.chi_square)
+                          .addNumber("threshold", g.threshold).addString("reason", g.reason).str());
+    o.addRaw("gated", jsonList(gated));
+  }
+  if (timings) o.addNumber("latency_ms", f.latency_ms);
   const VisualFrameRecord* v = j < records.visual.size() ? &records.visual[j] : nullptr;
   const LidarFrameRecord* l = j < records.lidar.size() ? &records.lidar[j] : nullptr;
   if (v) o.addRaw("visual", visualJson(*v));
@@ -82,7 +92,7 @@ std::string scanJson(const ScanRecord& s, bool timings) {
   return o.str();
 }
 
-std::string summaryJson(const RunSummary& s, const std::optional<eval::EvalResult>& accuracy, bool timings) {
+std::string summaryJson(const RunSummary& s, const RunAccuracy& accuracy, bool timings) {
   JsonObject o;
   o.addString("mode", runModeName(s.mode))
       .addCount("images", s.images)
@@ -95,12 +105,22 @@ std::string summaryJson(const RunSummary& s, const std::optional<eval::EvalResul
       .addCount("switches", s.switches)
       .addNumber("fusion_lines_per_frame", s.fusion_lines_per_frame)
       .addNumber("sequence_seconds", s.sequence_seconds)
-      .addNumber("lost_fraction", s.lost_fraction);
-  if (accuracy) o.addRaw("accuracy", eval::formatJson(*accuracy));
+      .addNumber("lost_fraction", s.lost_fraction)
+      .addCount("gated_lidar_factors", s.gated_lidar)
+      .addCount("gated_visual_factors", s.gated_visual)
+      .addNumber("visual_consistency_first", s.visual_consistency_first)
+      .addNumber("visual_consistency_last", s.visual_consistency_last);
+  if (accuracy.online) o.addRaw("accuracy", eval::formatJson(*accuracy.online));
+  if (accuracy.refined) o.addRaw("accuracy_refined", eval::formatJson(*accuracy.refined));
   if (timings)
     o.addNumber("wall_seconds", s.wall_seconds)
         .addNumber("real_time_factor", s.real_time_factor)
-        .addNumber("peak_rss_mib", s.peak_rss_mib);
+        .addNumber("peak_rss_mib", s.peak_rss_mib)
+        .addRaw("latency_ms", JsonObject()
+                                  .addNumber("median", s.latency_median_ms)
+                                  .addNumber("p95", s.latency_p95_ms)
+                                  .addNumber("max", s.latency_max_ms)
+                                  .str());
   return o.str();
 }
 
@@ -125,6 +145,39 @@ double lostFraction(const PipelineRecords& records, const SystemOutput& output, 
   else
     for (const FrameOutput& f : output.frames) missing += !f.T_world_camera;
   return share(missing, records.images);
+}
+
+// Value at quantile q of the (unsorted) values; 0 when there are none.
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
+}
+
+// Mean of the frames' visual consistency over [begin, end), -1 without any.
+double meanConsistency(const std::vector<FrameOutput>& frames, std::size_t begin, std::size_t end) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t j = begin; j < end; ++j)
+    if (frames[j].visual_chi_square_per_dof >= 0.0) {
+      sum += frames[j].visual_chi_square_per_dof;
+      ++count;
+    }
+  return count == 0 ? -1.0 : sum / static_cast<double>(count);
+}
+
+void addOnlineFigures(const std::vector<FrameOutput>& frames, RunSummary& s) {
+  std::vector<double> latencies;
+  for (const FrameOutput& f : frames) {
+    latencies.push_back(f.latency_ms);
+    for (const GateEvent& g : f.gated) (g.source == FactorSource::kLidar ? s.gated_lidar : s.gated_visual) += 1;
+  }
+  s.latency_median_ms = quantile(latencies, 0.5);
+  s.latency_p95_ms = quantile(latencies, 0.95);
+  s.latency_max_ms = latencies.empty() ? 0.0 : *std::max_element(latencies.begin(), latencies.end());
+  s.visual_consistency_first = meanConsistency(frames, 0, frames.size() / 3);
+  s.visual_consistency_last = meanConsistency(frames, frames.size() - frames.size() / 3, frames.size());
 }
 
 }  // namespace
@@ -153,6 +206,7 @@ RunSummary summarize(const PipelineRecords& records, const SystemOutput& output,
   s.fusion_lines_per_frame = records.lidar.empty() ? 0.0 : static_cast<double>(lines) / records.lidar.size();
   s.switches = output.switches.size();
   s.lost_fraction = lostFraction(records, output, mode);
+  addOnlineFigures(output.frames, s);
   s.sequence_seconds = records.last_time - records.first_time;
   s.wall_seconds = wall_seconds;
   s.real_time_factor = wall_seconds > 0.0 ? s.sequence_seconds / wall_seconds : 0.0;
@@ -165,6 +219,9 @@ std::string formatRunSummary(const RunSummary& s, const SystemOutput& output) {
                                  "peak memory {:.0f} MiB\n",
                                  runModeName(s.mode), s.images, s.scans, s.sequence_seconds, s.wall_seconds,
                                  s.real_time_factor, s.peak_rss_mib);
+  if (s.images > 0)
+    text += fmt::format("online output latency: median {:.1f} ms, p95 {:.1f} ms, max {:.1f} ms\n", s.latency_median_ms,
+                        s.latency_p95_ms, s.latency_max_ms);
   if (!s.lidar_statuses.empty()) {
     text += "lidar subsystem:";
     for (const auto& [status, count] : s.lidar_statuses) text += fmt::format(" {} {},", status, count);
@@ -174,9 +231,10 @@ std::string formatRunSummary(const RunSummary& s, const SystemOutput& output) {
     text += fmt::format("visual subsystem: tracked {} of {} frames ({:.1f} %), {} map(s)\n", s.visual_tracked,
                         s.images, 100.0 * s.visual_tracked / std::max<std::size_t>(s.images, 1), s.visual_maps);
   if (s.mode == RunMode::kFused) {
-    text += fmt::format("fusion: {:.2f} fusion lines per frame; output from vision for {} of {} frames "
-                        "({} fused with the LiDAR pose), {} switch(es)\n",
-                        s.fusion_lines_per_frame, s.visual_output, s.images, s.fused_output, s.switches);
+    text += fmt::format("fusion: {:.2f} fusion lines per frame; vision entered the online pose of {} of {} frames "
+                        "({} with the LiDAR's), {} switch(es); gate dropped {} LiDAR and {} visual factors\n",
+                        s.fusion_lines_per_frame, s.visual_output, s.images, s.fused_output, s.switches,
+                        s.gated_lidar, s.gated_visual);
     for (const SwitchEvent& e : output.switches)
       text += fmt::format("  t={:.3f} -> {}: {}\n", e.t, sourceName(e.to), e.reason);
   }
@@ -184,13 +242,13 @@ std::string formatRunSummary(const RunSummary& s, const SystemOutput& output) {
 }
 
 void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records, const SystemOutput& output,
-                     const RunSummary& summary, const std::optional<eval::EvalResult>& accuracy,
-                     bool with_timings) {
+                     const RunSummary& summary, const RunAccuracy& accuracy, bool with_timings) {
   const std::filesystem::path dir(out_dir);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw Error(out_dir, "cannot create the output folder: " + ec.message());
   writeTum((dir / "trajectory.tum").string(), output.trajectory);
+  writeTum((dir / "trajectory_refined.tum").string(), output.trajectory_refined);
   if (!output.visual_maps.empty() || !output.lidar_camera.empty()) {
     const std::filesystem::path own = dir / "subsystems";
     std::filesystem::create_directories(own, ec);

@@ -33,6 +33,16 @@ struct RunSummary {
   // (lidar), frames vision did not track (visual), frames without output
   // (fused). Above one half the paper's tables print x.
   double lost_fraction = 0.0;
+  // Online output latency per camera frame (output wall time minus the
+  // frame's arrival), milliseconds.
+  double latency_median_ms = 0.0, latency_p95_ms = 0.0, latency_max_ms = 0.0;
+  // Factors the fused estimator's chi-square gate dropped, per subsystem.
+  std::size_t gated_lidar = 0, gated_visual = 0;
+  // Sensor-to-sensor consistency: mean chi^2 per degree of freedom of the
+  // accepted visual factors in the first and the last third of the run
+  // (about 1 when both subsystems' covariances are right; a steady rise
+  // points at the extrinsic or the time offset). -1: none.
+  double visual_consistency_first = -1.0, visual_consistency_last = -1.0;
 };
 
 RunSummary summarize(const PipelineRecords& records, const SystemOutput& output, RunMode mode, double wall_seconds);
@@ -40,14 +50,18 @@ RunSummary summarize(const PipelineRecords& records, const SystemOutput& output,
 // Several lines for the terminal, ending in a newline.
 std::string formatRunSummary(const RunSummary& summary, const SystemOutput& output);
 
-// Writes the four files into out_dir (created), and the subsystems' own
+// Writes trajectory.tum (online), trajectory_refined.tum (offline
+// refinement), stats.json, map.ply and lines.ply into out_dir (created), and the subsystems' own
 // trajectories into out_dir/subsystems: visual_map_<id>.tum (T_map_camera in
 // the frame of visual map <id>) and, in fused mode, lidar_camera.tum. Without
 // timings (for --deterministic) stats.json has no wall-clock figures, so runs
 // compare byte for byte.
 // The accuracy, when given, goes into the summary of stats.json.
+struct RunAccuracy {
+  std::optional<eval::EvalResult> online, refined;
+};
 void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records, const SystemOutput& output,
-                     const RunSummary& summary, const std::optional<eval::EvalResult>& accuracy, bool with_timings);
+                     const RunSummary& summary, const RunAccuracy& accuracy, bool with_timings);
 
 // Peak resident memory of this process (VmHWM), MiB; 0 when unknown.
 double peakResidentMiB();

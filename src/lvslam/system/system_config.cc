@@ -29,18 +29,17 @@ void applyAblation(SystemConfig& config, const std::string& name, const std::str
     config.fusion_lines_in_tracking = false;
   else if (name == "keypoint-depths")
     config.visual.visual.use_keypoint_depths = false;
-  else if (name == "output-fusion")
-    config.output_fusion.enabled = false;
+  else if (name == "paper-output")
+    config.paper_output = true;
   else
     throw Error(where, "unknown ablation '" + name +
                            "' (direction-residual, lidar-direction-refinement, fusion-lines, keypoint-depths or "
-                           "output-fusion)");
+                           "paper-output)");
 }
 
 DetectionConfig loadDetectionConfig(const YamlConfig& n) {
   n.requireKnownKeys({"min_tracked_points", "min_tracked_lines", "min_inlier_ratio", "min_brightness",
-                      "max_brightness", "min_contrast", "frames_to_recover", "max_disagreement_m",
-                      "max_disagreement_deg", "rejoin_step_m", "rejoin_step_deg"});
+                      "max_brightness", "min_contrast", "frames_to_recover", "rejoin_step_m", "rejoin_step_deg"});
   DetectionConfig c;
   c.min_tracked_points = n.getInt("min_tracked_points", c.min_tracked_points);
   c.min_tracked_lines = n.getInt("min_tracked_lines", c.min_tracked_lines);
@@ -49,57 +48,47 @@ DetectionConfig loadDetectionConfig(const YamlConfig& n) {
   c.max_brightness = n.getDouble("max_brightness", c.max_brightness);
   c.min_contrast = n.getDouble("min_contrast", c.min_contrast);
   c.frames_to_recover = n.getInt("frames_to_recover", c.frames_to_recover);
-  c.max_disagreement_m = n.getDouble("max_disagreement_m", c.max_disagreement_m);
-  c.max_disagreement_deg = n.getDouble("max_disagreement_deg", c.max_disagreement_deg);
   c.rejoin_step_m = n.getDouble("rejoin_step_m", c.rejoin_step_m);
   c.rejoin_step_deg = n.getDouble("rejoin_step_deg", c.rejoin_step_deg);
   if (c.min_tracked_points < 0 || c.min_tracked_lines < 0) n.fail("tracked minima must not be negative");
   if (!(c.min_inlier_ratio >= 0.0 && c.min_inlier_ratio <= 1.0)) n.fail("min_inlier_ratio must be in [0, 1]");
   if (!(c.min_brightness < c.max_brightness)) n.fail("need min_brightness < max_brightness");
   if (c.frames_to_recover < 1) n.fail("frames_to_recover must be at least 1");
-  if (!(c.max_disagreement_m > 0.0 && c.max_disagreement_deg > 0.0)) n.fail("disagreement bounds must be positive");
   if (!(c.rejoin_step_m >= 0.0 && c.rejoin_step_deg >= 0.0)) n.fail("rejoin steps must not be negative");
   return c;
 }
 
-PoseFusionConfig loadPoseFusionConfig(const YamlConfig& n) {
-  n.requireKnownKeys({"enabled", "lidar_sigma_m", "lidar_sigma_deg", "lidar_drift_m", "lidar_drift_deg",
-                      "visual_pixel_sigma", "max_step_m", "max_step_deg", "band_pass_gain", "band_pass_gain_vertical",
-                      "band_pass_sigma_s", "band_pass_sigma_fast_s"});
-  PoseFusionConfig c;
-  c.enabled = n.getBool("enabled", c.enabled);
-  c.lidar_sigma_m = n.getDouble("lidar_sigma_m", c.lidar_sigma_m);
-  c.lidar_sigma_deg = n.getDouble("lidar_sigma_deg", c.lidar_sigma_deg);
+FusedEstimatorConfig loadEstimatorConfig(const YamlConfig& n) {
+  n.requireKnownKeys({"window_s", "visual_pixel_sigma", "lidar_drift_m", "lidar_drift_deg", "motion_accel",
+                      "motion_angular_accel_deg", "huber_delta", "max_iterations"});
+  FusedEstimatorConfig c;
+  c.window_s = n.getDouble("window_s", c.window_s);
+  c.visual_pixel_sigma = n.getDouble("visual_pixel_sigma", c.visual_pixel_sigma);
   c.lidar_drift_m = n.getDouble("lidar_drift_m", c.lidar_drift_m);
   c.lidar_drift_deg = n.getDouble("lidar_drift_deg", c.lidar_drift_deg);
-  c.visual_pixel_sigma = n.getDouble("visual_pixel_sigma", c.visual_pixel_sigma);
-  c.max_step_m = n.getDouble("max_step_m", c.max_step_m);
-  c.max_step_deg = n.getDouble("max_step_deg", c.max_step_deg);
-  c.band_pass.gain = n.getDouble("band_pass_gain", c.band_pass.gain);
-  c.band_pass.gain_vertical = n.getDouble("band_pass_gain_vertical", c.band_pass.gain_vertical);
-  c.band_pass.sigma_s = n.getDouble("band_pass_sigma_s", c.band_pass.sigma_s);
-  c.band_pass.sigma_fast_s = n.getDouble("band_pass_sigma_fast_s", c.band_pass.sigma_fast_s);
-  if (!(c.lidar_sigma_m > 0.0 && c.lidar_sigma_deg > 0.0 && c.visual_pixel_sigma > 0.0))
-    n.fail("lidar_sigma_m, lidar_sigma_deg and visual_pixel_sigma must be positive");
-  if (!(c.max_step_m > 0.0 && c.max_step_deg > 0.0)) n.fail("max_step_m and max_step_deg must be positive");
+  c.motion_accel = n.getDouble("motion_accel", c.motion_accel);
+  c.motion_angular_accel_deg = n.getDouble("motion_angular_accel_deg", c.motion_angular_accel_deg);
+  c.huber_delta = n.getDouble("huber_delta", c.huber_delta);
+  c.max_iterations = n.getInt("max_iterations", c.max_iterations);
+  if (!(c.window_s >= 0.0)) n.at("window_s").fail("must not be negative");
+  if (!(c.visual_pixel_sigma > 0.0)) n.at("visual_pixel_sigma").fail("must be positive");
   if (!(c.lidar_drift_m >= 0.0 && c.lidar_drift_deg >= 0.0)) n.fail("lidar_drift_m and lidar_drift_deg must be >= 0");
-  if (!(c.band_pass.gain >= 0.0 && c.band_pass.gain <= 1.0)) n.fail("band_pass_gain must lie in [0, 1]");
-  if (!(c.band_pass.gain_vertical >= 0.0 && c.band_pass.gain_vertical <= 1.0))
-    n.fail("band_pass_gain_vertical must lie in [0, 1]");
-  if (!(c.band_pass.sigma_fast_s >= 0.0 && c.band_pass.sigma_fast_s < c.band_pass.sigma_s))
-    n.fail("need 0 <= band_pass_sigma_fast_s < band_pass_sigma_s");
+  if (!(c.motion_accel > 0.0 && c.motion_angular_accel_deg > 0.0))
+    n.fail("motion_accel and motion_angular_accel_deg must be positive");
+  if (!(c.huber_delta > 0.0)) n.at("huber_delta").fail("must be positive");
+  if (c.max_iterations < 1) n.at("max_iterations").fail("must be at least 1");
   return c;
 }
 
 SystemConfig loadSystemConfig(const YamlConfig& root) {
   // A misspelt section would silently keep all its defaults.
-  root.requireKnownKeys({"lidar", "visual", "fusion", "detection", "output_fusion", "system"});
+  root.requireKnownKeys({"lidar", "visual", "fusion", "detection", "estimator", "system"});
   SystemConfig c;
   if (root.find("lidar")) c.lidar = lidar::loadLidarOdometryConfig(root);
   if (const auto v = root.find("visual")) c.visual.visual = visual::loadVisualConfig(*v);
   c.fusion = fusion::loadFusionConfig(root);
   if (const auto d = root.find("detection")) c.detection = loadDetectionConfig(*d);
-  if (const auto f = root.find("output_fusion")) c.output_fusion = loadPoseFusionConfig(*f);
+  if (const auto f = root.find("estimator")) c.estimator = loadEstimatorConfig(*f);
   if (const auto s = root.find("system")) {
     s->requireKnownKeys({"fusion_lines_in_tracking", "lidar_direction_refinement", "depth_hint_max_dt",
                          "keypoint_depth_radius_px", "keypoint_depth_max_dt", "keypoint_depth_source",

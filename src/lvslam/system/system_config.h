@@ -1,7 +1,7 @@
 #pragma once
 // Everything the dual system is configured with, one plain struct per box of
 // the paper's Fig. 1, and the switches of the ablation study. Loaded from the
-// sections lidar:, visual:, fusion:, detection:, output_fusion: and system:
+// sections lidar:, visual:, fusion:, detection:, estimator: and system:
 // of a YAML file;
 // absent sections keep the defaults, unknown keys are lvslam::Errors.
 #include <string>
@@ -10,7 +10,7 @@
 #include "lvslam/fusion/fusion_config.h"
 #include "lvslam/lidar/lidar_config.h"
 #include "lvslam/system/detection_module.h"
-#include "lvslam/system/pose_fusion.h"
+#include "lvslam/system/online/fused_estimator.h"
 #include "lvslam/visual/tracking/visual_slam.h"
 
 namespace lvslam::system {
@@ -34,7 +34,10 @@ struct SystemConfig {
   visual::VisualSlamConfig visual;
   fusion::FusionConfig fusion;
   DetectionConfig detection;
-  PoseFusionConfig output_fusion;
+  FusedEstimatorConfig estimator;
+  // The paper's output (ablation "paper-output"): the visual pose while
+  // the detection module trusts it, the LiDAR's chained in otherwise.
+  bool paper_output = false;
   // Ablations (each switches off one of the paper's contributions).
   bool fusion_lines_in_tracking = true;    // fusion lines become visual landmarks
   bool lidar_direction_refinement = true;  // d_v_mean reaches the LiDAR's linear points
@@ -57,6 +60,9 @@ struct SystemConfig {
   bool final_map_relocation = true;
   // One thread, fixed order: byte-identical output for the same input.
   bool deterministic = false;
+  // Read the recording at the pace of its own time stamps, as a live robot
+  // delivers it (latency as live; otherwise as fast as the system goes).
+  bool realtime = false;
 };
 
 // Switches off one contribution of the paper for the ablation study:
@@ -64,15 +70,16 @@ struct SystemConfig {
 // refinement" (d_v_mean), "fusion-lines" (fusion lines as visual landmarks);
 // or one of lvslam's own additions, "keypoint-depths" (LiDAR depth for
 // keyframe points in bundle adjustment, beyond the paper's metric start) and
-// "output-fusion" (the output is the visual pose itself, as in the paper).
+// "paper-output" (the output is the visual pose itself, as in the paper,
+// instead of the fused estimator).
 // Throws lvslam::Error naming `where` for another name.
 void applyAblation(SystemConfig& config, const std::string& name, const std::string& where);
 inline const char* const kAblations[] = {"direction-residual", "lidar-direction-refinement", "fusion-lines",
-                                         "keypoint-depths", "output-fusion"};
+                                         "keypoint-depths", "paper-output"};
 
 // `root` is the whole file; the mode and the deterministic flag come from the command line.
 SystemConfig loadSystemConfig(const YamlConfig& root);
 DetectionConfig loadDetectionConfig(const YamlConfig& section);
-PoseFusionConfig loadPoseFusionConfig(const YamlConfig& section);
+FusedEstimatorConfig loadEstimatorConfig(const YamlConfig& section);
 
 }  // namespace lvslam::system

@@ -1,6 +1,8 @@
 #include "lvslam/system/system_pipeline.h"
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <future>
 #include <memory>
 #include <mutex>
@@ -14,6 +16,7 @@
 #include "lvslam/system/final_visual_poses.h"
 #include "lvslam/system/stopwatch.h"
 #include "lvslam/system/lidar_worker.h"
+#include "lvslam/system/online/online_stage.h"
 #include "lvslam/system/visual_worker.h"
 
 namespace lvslam::system {
@@ -78,7 +81,10 @@ struct VisualFrameJob {
   double extract_ms = 0.0;
   ExchangePtr exchange;
 };
-using LidarJob = std::variant<ScanPtr, LidarFrameJob>;
+// The sweep before the next scan has ended: every camera frame of it has
+// been handed on, so it can be registered (before the next scan arrives).
+struct SweepEndJob {};
+using LidarJob = std::variant<ScanPtr, LidarFrameJob, SweepEndJob>;
 // Scans pass the extraction thread unchanged, so that the visual thread sees
 // scans and frames in reading order (its depth hints come from the scans).
 using ExtractionJob = std::variant<ScanPtr, ImageJob>;
@@ -103,6 +109,7 @@ class Failure {
 
 void runLidarJob(LidarWorker& worker, LidarJob& job) {
   if (auto* scan = std::get_if<ScanPtr>(&job)) return worker.addScan(**scan);
+  if (std::holds_alternative<SweepEndJob>(job)) return worker.endSweep();
   auto& frame = std::get<LidarFrameJob>(job);
   if (!frame.exchange) {
     worker.addFrame(frame.t, {});
@@ -134,11 +141,18 @@ VisualJob extract(visual::FeatureExtractor& extractor, ExtractionJob& job) {
   }
 }
 
-void runVisualJob(VisualWorker& worker, VisualJob& job) {
+// Tracks a frame and hands its record to the online output.
+VisualFrameFeatures trackFrame(VisualWorker& worker, VisualFrameJob& frame, OnlineStage& stage) {
+  VisualFrameFeatures features = worker.track(std::move(frame.image), frame.extract_ms);
+  stage.visualReady(worker.frameCount() - 1, worker.lastFrame());
+  return features;
+}
+
+void runVisualJob(VisualWorker& worker, VisualJob& job, OnlineStage& stage) {
   if (auto* scan = std::get_if<ScanPtr>(&job)) return worker.addScan(*scan);
   auto& frame = std::get<VisualFrameJob>(job);
   try {
-    VisualFrameFeatures features = worker.track(std::move(frame.image), frame.extract_ms);
+    VisualFrameFeatures features = trackFrame(worker, frame, stage);
     if (!frame.exchange) return;
     frame.exchange->segments.set_value(std::move(features));
     worker.applyFusion(frame.exchange->fusion_future.get());
@@ -180,7 +194,19 @@ void workerLoop(BoundedQueue<Job>& queue, Failure& failure, Run run, const std::
   }
 }
 
-PipelineRecords collect(Workers& workers, bool final_map_relocation, PipelineRecords records) {
+PipelineRecords collect(Workers& workers, OnlineStage& stage, bool final_map_relocation, PipelineRecords records) {
+  static const std::vector<VisualFrameRecord> no_visual;
+  static const std::vector<LidarFrameRecord> no_lidar;
+  stage.finish(workers.visual ? workers.visual->frames() : no_visual, workers.lidar ? workers.lidar->frames() : no_lidar);
+  records.online = stage.takeFrames();
+  records.switches = stage.output().switches();
+  records.T_world_map = stage.output().mapPlacements();
+  if (const FusedEstimator* estimator = stage.output().estimator()) {
+    records.graph_times = estimator->nodeTimes();
+    records.graph_camera_nodes = estimator->cameraNodes();
+    records.graph_nodes = estimator->nodes();
+    records.graph_factors = estimator->factors();
+  }
   if (workers.lidar) {
     records.lidar = workers.lidar->frames();
     records.scans = workers.lidar->scans();
@@ -203,6 +229,17 @@ PipelineRecords collect(Workers& workers, bool final_map_relocation, PipelineRec
   return records;
 }
 
+// When a live sensor hands the item over: an image at its time stamp, a
+// sweep when its last point is measured.
+double deliveryTime(const SensorData& item) {
+  if (const auto* image = std::get_if<ImageFrame>(&item)) return image->timestamp;
+  const LidarScan& scan = std::get<LidarScan>(item);
+  float last = 0.0f;
+  if (scan.has_time)
+    for (const LidarPoint& p : scan.points) last = std::max(last, p.time);
+  return scan.timestamp + static_cast<double>(last);
+}
+
 void noteTime(PipelineRecords& records, std::size_t items_before, double t) {
   if (items_before == 0) records.first_time = t;
   records.last_time = t;
@@ -212,6 +249,12 @@ void noteTime(PipelineRecords& records, std::size_t items_before, double t) {
 
 PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, const ProgressCallback& progress) {
   Workers workers = makeWorkers(source, config);
+  OnlineStage stage(makeOnlineOutput(config, source.calibration().T_camera_lidar), workers.visual != nullptr,
+                    workers.lidar != nullptr);
+  if (workers.lidar)
+    workers.lidar->onFramePosed([&stage](std::size_t index, const LidarFrameRecord& record) {
+      stage.lidarReady(index, record);
+    });
   // Bit-identical runs need TBB's loops on one thread too.
   std::optional<tbb::global_control> one_thread;
   if (config.deterministic) one_thread.emplace(tbb::global_control::max_allowed_parallelism, 1);
@@ -252,7 +295,7 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
       visual_queue.close();  // after the last frame: the visual thread drains and ends
     });
     visual_thread = std::thread([&] {
-      workerLoop(visual_queue, failure, [&](VisualJob& job) { runVisualJob(*workers.visual, job); }, close_all);
+      workerLoop(visual_queue, failure, [&](VisualJob& job) { runVisualJob(*workers.visual, job, stage); }, close_all);
     });
   }
 
@@ -264,18 +307,35 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
   const auto toVisual = [&](ExtractionJob job) {
     if (threaded) return extraction_queue.push(std::move(job));
     VisualJob extracted = extract(*workers.extractor, job);
-    runVisualJob(*workers.visual, extracted);
+    runVisualJob(*workers.visual, extracted, stage);
     return true;
   };
 
   PipelineRecords records;
   std::size_t scans = 0;
   std::exception_ptr reading_error;
+  // Live pace: an item is handed on no earlier than a live sensor would
+  // deliver it (an image at its time stamp, a sweep at its last point), and
+  // a frame's latency counts from then.
+  const auto wall_start = std::chrono::steady_clock::now();
+  std::optional<double> data_start;
+  const auto due = [&](double t) {
+    if (!data_start) data_start = t;
+    return wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(t - *data_start));
+  };
+  const auto paceTo = [&](double t) {
+    if (config.realtime) std::this_thread::sleep_until(due(t));
+  };
   try {
     while (auto data = source.next()) {
       if (failure.failed()) break;
       bool ok = true;
       if (auto* scan = std::get_if<LidarScan>(&*data)) {
+        // A scan's time stamp is its first point's: the sweep before it ends then.
+        paceTo(scan->timestamp);
+        if (workers.lidar) ok = toLidar(SweepEndJob{});
+        paceTo(deliveryTime(*data));
         noteTime(records, records.images + scans, scan->timestamp);
         ++scans;
         const ScanPtr shared = std::make_shared<const LidarScan>(std::move(*scan));
@@ -284,7 +344,9 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
         if (progress) progress(shared->timestamp, records.images, scans);
       } else {
         auto& image = std::get<ImageFrame>(*data);
+        paceTo(image.timestamp);
         noteTime(records, records.images + scans, image.timestamp);
+        stage.frameArrived(records.images, config.realtime ? due(image.timestamp) : std::chrono::steady_clock::now());
         ++records.images;
         const double t = image.timestamp;
         // The fusion framework needs both subsystems of this frame.
@@ -292,7 +354,7 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
             workers.lidar && workers.visual && threaded ? std::make_shared<FrameExchange>() : nullptr;
         if (workers.visual && !threaded) {
           VisualFrameJob frame = extractFrame(*workers.extractor, ImageJob{std::move(image), nullptr});
-          const VisualFrameFeatures features = workers.visual->track(std::move(frame.image), frame.extract_ms);
+          const VisualFrameFeatures features = trackFrame(*workers.visual, frame, stage);
           if (workers.lidar) workers.visual->applyFusion(workers.lidar->addFrame(t, features));
         } else {
           if (workers.visual) ok = toVisual(ImageJob{std::move(image), exchange});
@@ -320,7 +382,7 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
   if (reading_error) std::rethrow_exception(reading_error);
   if (failure.first()) std::rethrow_exception(failure.first());
   records.scans_read = scans;
-  return collect(workers, config.final_map_relocation, std::move(records));
+  return collect(workers, stage, config.final_map_relocation, std::move(records));
 }
 
 }  // namespace lvslam::system

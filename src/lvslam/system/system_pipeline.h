@@ -6,12 +6,14 @@
 // every computation is fixed by the data, so the threaded run gives the same
 // numbers as the one-thread deterministic run.
 #include <functional>
+#include <map>
 #include <optional>
 #include <vector>
 
 #include "lvslam/io/ply_writer.h"
 #include "lvslam/io/sensor_source.h"
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/online/online_output.h"
 #include "lvslam/system/system_config.h"
 
 namespace lvslam::system {
@@ -30,6 +32,17 @@ struct PipelineRecords {
   Trajectory T_odom_lidar_scans;          // at scan times
   std::vector<PlyPoint> lidar_map;        // odometry world frame
   std::vector<MapLine> visual_lines;      // the lines of every visual map, old and current
+  // The online output, one per camera frame, each made when its data were in
+  // (online/online_output.h), with the detection module's switches, where
+  // each visual map sat in the output world, and (fused mode) the
+  // estimator's graph for the offline refinement.
+  std::vector<FrameOutput> online;
+  std::vector<SwitchEvent> switches;
+  std::map<int, Eigen::Isometry3d> T_world_map;
+  std::vector<double> graph_times;
+  std::vector<int> graph_camera_nodes;
+  std::vector<PoseNode> graph_nodes;
+  std::vector<PoseFactor> graph_factors;
   std::size_t images = 0, scans_read = 0;  // as read from the source
   double first_time = 0.0, last_time = 0.0;  // of the sensor data
 };

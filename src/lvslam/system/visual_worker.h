@@ -33,6 +33,10 @@ class VisualWorker {
   // The records of every frame, handed over once the run has ended (each
   // keeps its tracked observations, so they are moved, not copied).
   std::vector<VisualFrameRecord> takeFrames() { return std::move(frames_); }
+  // The record of the frame just tracked, and how many frames so far.
+  const VisualFrameRecord& lastFrame() const { return frames_.back(); }
+  const std::vector<VisualFrameRecord>& frames() const { return frames_; }
+  std::size_t frameCount() const { return frames_.size(); }
   const visual::VisualSlam& slam() const { return slam_; }
 
  private:

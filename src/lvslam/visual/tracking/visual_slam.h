@@ -89,7 +89,7 @@ struct VisualFrameResult {
   // (config.visual.map_correction): earlier poses of this map are, in the
   // corrected map, T_new_old * T_world_camera (the newest keyframe's move).
   std::optional<Eigen::Isometry3d> T_new_old;
-  // For fusing this pose with the LiDAR's (system/pose_fusion.h): the
+  // For the online estimator (system/online/fused_estimator.h): the
   // tracker's information on it (PoseOptimizationResult::information, at
   // 1 px per ORB level 0; none when the pose did not come from tracking),
   // and the map's alignment with the LiDAR odometry (VisualMap::T_world_odom).

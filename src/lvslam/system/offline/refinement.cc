@@ -1,0 +1,59 @@
+#include "lvslam/system/offline/refinement.h"
+
+namespace lvslam::system {
+
+namespace {
+
+// The estimator again, over the whole run: each visual pose placed on its
+// map's final keyframes, each LiDAR pose interpolated between the sweeps
+// around it; then its graph smoothed with every node free but the first
+// (the world).
+Trajectory smoothFusedGraph(const PipelineRecords& records, const SystemConfig& config,
+                            const Eigen::Isometry3d& T_camera_lidar) {
+  const std::unique_ptr<OnlineOutput> replay = makeOnlineOutput(config, T_camera_lidar, true);
+  for (std::size_t j = 0; j < records.visual.size() && j < records.lidar.size(); ++j)
+    replay->add(&records.visual[j], &records.lidar[j]);
+  const FusedEstimator& estimator = *replay->estimator();
+  std::vector<PoseNode> nodes = estimator.nodes();
+  solvePoseGraph(nodes, estimator.factors(), PoseGraphSolveConfig{3.0, 50, true});
+  Trajectory refined;
+  for (const int node : estimator.cameraNodes()) {
+    const auto i = static_cast<std::size_t>(node);
+    refined.push_back({estimator.nodeTimes()[i], nodes[i].T_world_camera});
+  }
+  return refined;
+}
+
+Trajectory replayWithFinalPoses(const PipelineRecords& records, const SystemConfig& config,
+                                const Eigen::Isometry3d& T_camera_lidar) {
+  const std::unique_ptr<OnlineOutput> output = makeOnlineOutput(config, T_camera_lidar, true);
+  Trajectory refined;
+  for (std::size_t j = 0; j < records.visual.size(); ++j) {
+    const LidarFrameRecord* lidar = j < records.lidar.size() ? &records.lidar[j] : nullptr;
+    const FrameOutput frame = output->add(&records.visual[j], lidar);
+    if (frame.T_world_camera) refined.push_back({frame.t, *frame.T_world_camera});
+  }
+  return refined;
+}
+
+// The LiDAR odometry at each camera time as it stands after the run: each
+// frame interpolated between the sweeps around it (the online output had
+// only the sweep covering it).
+Trajectory lidarAtFrames(const PipelineRecords& records, const Eigen::Isometry3d& T_camera_lidar) {
+  Trajectory refined;
+  for (const LidarFrameRecord& l : records.lidar)
+    if (l.T_odom_lidar) refined.push_back({l.t, *l.T_odom_lidar * T_camera_lidar.inverse()});
+  return refined;
+}
+
+}  // namespace
+
+Trajectory refineTrajectory(const PipelineRecords& records, const SystemConfig& config,
+                            const Eigen::Isometry3d& T_camera_lidar, const Trajectory& online) {
+  if (config.mode == RunMode::kLidar) return records.lidar.empty() ? online : lidarAtFrames(records, T_camera_lidar);
+  if (config.mode == RunMode::kFused && !config.paper_output) return smoothFusedGraph(records, config, T_camera_lidar);
+  if (!config.final_map_poses) return online;
+  return replayWithFinalPoses(records, config, T_camera_lidar);
+}
+
+}  // namespace lvslam::system

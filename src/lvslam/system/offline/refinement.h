@@ -1,0 +1,19 @@
+#pragma once
+// Offline refinement: what needs the whole run, written apart from the
+// online output (trajectory_refined.tum). Fused mode: the online
+// estimator's graph smoothed over the whole run (every frame free, every
+// accepted factor, the first pose held). Visual mode and the paper's output:
+// the same per-frame output fed with each visual pose placed on its
+// keyframe as the keyframe stands at the end (final_visual_poses.h, as
+// ORB-SLAM's SaveTrajectoryTUM). LiDAR mode: each frame interpolated
+// between the registered sweeps around it (online: the sweep covering it).
+#include "lvslam/core/trajectory.h"
+#include "lvslam/system/system_config.h"
+#include "lvslam/system/system_pipeline.h"
+
+namespace lvslam::system {
+
+Trajectory refineTrajectory(const PipelineRecords& records, const SystemConfig& config,
+                            const Eigen::Isometry3d& T_camera_lidar, const Trajectory& online);
+
+}  // namespace lvslam::system

@@ -1,0 +1,244 @@
+#include "lvslam/system/online/fused_estimator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lvslam/system/online/pose_information.h"
+
+namespace lvslam::system {
+
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+// The camera node whose time is t (a map's first view is an earlier frame).
+std::optional<int> nodeAtTime(const std::vector<double>& times, const std::vector<int>& camera_nodes, double t) {
+  const auto it = std::lower_bound(camera_nodes.begin(), camera_nodes.end(), t - 1e-9,
+                                   [&](int node, double value) { return times[static_cast<std::size_t>(node)] < value; });
+  if (it == camera_nodes.end() || std::abs(times[static_cast<std::size_t>(*it)] - t) > 1e-6) return std::nullopt;
+  return *it;
+}
+
+}  // namespace
+
+FusedEstimator::FusedEstimator(const FusedEstimatorConfig& config)
+    : config_(config),
+      lidar_gate_(FactorSource::kLidar, {config.motion_accel, config.motion_angular_accel_deg * kDegToRad,
+                                         config.gate_accept_after}),
+      visual_gate_(FactorSource::kVisual, {config.motion_accel, config.motion_angular_accel_deg * kDegToRad,
+                                           config.gate_accept_after}) {}
+
+FusedEstimator::Candidate FusedEstimator::makeCandidate(PoseFactor factor) const {
+  Candidate c;
+  const PseudoInverse inverse = pseudoInverse(factor.information);
+  c.covariance = inverse.inverse;
+  c.rank = inverse.rank;
+  c.T_world_implied = nodes_[static_cast<std::size_t>(factor.from)].T_world_camera * factor.T_from_to;
+  c.factor = std::move(factor);
+  return c;
+}
+
+int FusedEstimator::addNode(double t, const Eigen::Isometry3d& T, bool fixed) {
+  times_.push_back(t);
+  nodes_.push_back({T, fixed});
+  factors_to_.emplace_back();
+  return static_cast<int>(nodes_.size()) - 1;
+}
+
+void FusedEstimator::accept(const PoseFactor& factor) {
+  factors_to_[static_cast<std::size_t>(factor.to)].push_back(static_cast<int>(factors_.size()));
+  factors_.push_back(factor);
+}
+
+// The odometry's camera pose, seen through a new odometry-frame node: that
+// node follows the last one within the drift over the path between (a
+// random walk about the camera, carried to the odometry frame's origin by
+// the adjoint), and the camera follows the node within the ICP's own
+// covariance (Censi 2007: J^T J / sigma^2 at the optimum).
+std::optional<FusedEstimator::Candidate> FusedEstimator::lidarFactor(int node, const LidarFrameInput& lidar,
+                                                                     bool new_start) {
+  const double t = times_[static_cast<std::size_t>(node)];
+  if (!last_lidar_) {  // the first LiDAR pose defines the world
+    const int odom = addNode(t, Eigen::Isometry3d::Identity(), true);
+    last_lidar_ = std::make_pair(odom, lidar);
+    return makeCandidate({odom, node, lidar.T_odom_camera, lidar.information, FactorSource::kLidar});
+  }
+  const int previous_odom = last_lidar_->first;
+  const LidarFrameInput previous = last_lidar_->second;
+  const double path = (previous.T_odom_camera.inverse() * lidar.T_odom_camera).translation().norm();
+  const Matrix6d drift = isotropicCovariance(config_.lidar_drift_m * std::sqrt(path),
+                                             config_.lidar_drift_deg * kDegToRad * std::sqrt(path));
+  const Matrix6d Ad = adjointSE3(lidar.T_odom_camera);
+  const Matrix6d drift_at_origin = Ad * drift * Ad.transpose();
+  const int odom = addNode(t, nodes_[static_cast<std::size_t>(previous_odom)].T_world_camera, false);
+  last_lidar_ = std::make_pair(odom, lidar);
+  const PseudoInverse inverse = pseudoInverse(drift_at_origin);
+  if (new_start) {
+    // The odometry jumped and stayed: its frame takes the jump, the output does not.
+  } else if (inverse.rank == 6) {
+    accept({previous_odom, odom, Eigen::Isometry3d::Identity(), inverse.inverse, FactorSource::kLidar});
+  } else {  // no path: the odometry frame did not move
+    accept({previous_odom, odom, Eigen::Isometry3d::Identity(), Matrix6d::Identity() * 1e12, FactorSource::kLidar});
+  }
+  if (pseudoInverse(lidar.information).rank == 0) return std::nullopt;
+  return makeCandidate({odom, node, lidar.T_odom_camera, lidar.information, FactorSource::kLidar});
+}
+
+// Where the frame's visual pose is measured from: the keyframe it was
+// tracked against, the map's first view, or (a frame that became a
+// keyframe, or whose keyframe never was a node) the map's previous frame.
+std::optional<int> FusedEstimator::visualFrom(double t, const VisualFrameInput& visual,
+                                              Eigen::Isometry3d& T_from_to) const {
+  if (visual.initial_reference) {
+    const auto& [keyframe, first_view] = *visual.initial_reference;
+    const std::optional<int> from = nodeAtTime(times_, camera_nodes_, first_view.t);
+    if (!from) return std::nullopt;
+    T_from_to = first_view.T_world_frame.inverse() * visual.T_map_camera;
+    return from;
+  }
+  if (visual.reference_keyframe >= 0) {
+    const auto found = keyframe_nodes_.find({visual.map_id, visual.reference_keyframe});
+    if (found != keyframe_nodes_.end()) {
+      T_from_to = visual.T_keyframe_camera;
+      return found->second;
+    }
+  }
+  const auto last = last_visual_.find(visual.map_id);
+  if (last == last_visual_.end()) return std::nullopt;
+  (void)t;
+  T_from_to = last->second.second.inverse() * visual.T_map_camera;
+  return last->second.first;
+}
+
+std::optional<FusedEstimator::Candidate> FusedEstimator::visualFactor(int node, double t,
+                                                                      const VisualFrameInput& visual, bool use) {
+  if (visual.T_new_old)  // the map moved under its earlier poses
+    if (const auto last = last_visual_.find(visual.map_id); last != last_visual_.end())
+      last->second.second = *visual.T_new_old * last->second.second;
+  std::optional<Candidate> candidate;
+  Eigen::Isometry3d T_from_to;
+  const std::optional<int> from = use ? visualFrom(t, visual, T_from_to) : std::nullopt;
+  if (from && *from != node) {
+    // The tracker's information is for T_camera_map <- exp(d) T_camera_map,
+    // i.e. T_map_camera <- T_map_camera exp(-d): the same quadratic form.
+    const double s = config_.visual_pixel_sigma;
+    candidate = makeCandidate({*from, node, T_from_to, visual.information / (s * s), FactorSource::kVisual});
+  }
+  if (visual.initial_reference) {
+    const std::optional<int> first = nodeAtTime(times_, camera_nodes_, visual.initial_reference->second.t);
+    if (first) keyframe_nodes_[{visual.map_id, visual.initial_reference->first}] = *first;
+  }
+  if (visual.keyframe >= 0) keyframe_nodes_[{visual.map_id, visual.keyframe}] = node;
+  if (use) last_visual_[visual.map_id] = {node, visual.T_map_camera};
+  return candidate;
+}
+
+// Constant velocity from the last two nodes; the platform's acceleration
+// over dt moves the pose by about a dt^2.
+FusedEstimator::Candidate FusedEstimator::motionFactor(int node, double t) const {
+  const std::size_t k = camera_nodes_.size() - 1;  // this frame's; k >= 1
+  const int previous = camera_nodes_[k - 1];
+  const double dt = t - times_[static_cast<std::size_t>(previous)];
+  Eigen::Isometry3d T_step = Eigen::Isometry3d::Identity();
+  double sigma_m = config_.motion_accel * dt * dt, sigma_rad = config_.motion_angular_accel_deg * kDegToRad * dt * dt;
+  if (k >= 2) {
+    const int before = camera_nodes_[k - 2];
+    const double dt_before = times_[static_cast<std::size_t>(previous)] - times_[static_cast<std::size_t>(before)];
+    const Eigen::Isometry3d T_last = nodes_[static_cast<std::size_t>(before)].T_world_camera.inverse() *
+                                     nodes_[static_cast<std::size_t>(previous)].T_world_camera;
+    if (dt_before > 0) T_step = expSE3(logSE3(T_last) * (dt / dt_before));
+  } else {
+    sigma_m = 2.0 * dt;  // no velocity yet: anything a walking robot does
+    sigma_rad = 90.0 * kDegToRad * dt;
+  }
+  const Matrix6d information = isotropicCovariance(sigma_m, sigma_rad).inverse();
+  return makeCandidate({previous, node, T_step, information, FactorSource::kMotion});
+}
+
+void FusedEstimator::solveWindow(int newest) {
+  const double start = times_[static_cast<std::size_t>(newest)] - config_.window_s;
+  int first = newest;
+  while (first > 0 && times_[static_cast<std::size_t>(first - 1)] >= start) --first;
+  // Local graph: window nodes free, every other node a factor reaches fixed.
+  std::map<int, int> local;
+  std::vector<PoseNode> nodes;
+  std::vector<PoseFactor> factors;
+  const auto localIndex = [&](int node) {
+    const auto [it, inserted] = local.try_emplace(node, static_cast<int>(nodes.size()));
+    const PoseNode& held = nodes_[static_cast<std::size_t>(node)];
+    if (inserted) nodes.push_back({held.T_world_camera, node < first || held.fixed});
+    return it->second;
+  };
+  for (int node = first; node <= newest; ++node) localIndex(node);
+  for (int node = first; node <= newest; ++node)
+    for (const int f : factors_to_[static_cast<std::size_t>(node)]) {
+      PoseFactor factor = factors_[static_cast<std::size_t>(f)];
+      factor.from = localIndex(factor.from);
+      factor.to = localIndex(factor.to);
+      factors.push_back(std::move(factor));
+    }
+  // Held by the node before the window (its last estimate) when it is reached.
+  PoseGraphSolveConfig solve{config_.huber_delta, config_.max_iterations, true};
+  if (!solvePoseGraph(nodes, factors, solve)) return;
+  for (const auto& [node, index] : local)
+    if (node >= first) nodes_[static_cast<std::size_t>(node)] = nodes[static_cast<std::size_t>(index)];
+}
+
+FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInput>& lidar,
+                                     const std::optional<VisualFrameInput>& visual) {
+  FusedFrameOutput out;
+  if (camera_nodes_.empty() && !lidar) return out;  // the world is the odometry frame: wait for its first pose
+  const Eigen::Isometry3d guess = camera_nodes_.empty() ? lidar->T_odom_camera
+                                                        : nodes_[static_cast<std::size_t>(camera_nodes_.back())].T_world_camera;
+  // The first camera pose is the LiDAR's: it fixes the world (a direction
+  // the LiDAR cannot see at the start would otherwise float).
+  const int node = addNode(t, guess, camera_nodes_.empty());
+  camera_nodes_.push_back(node);
+  std::optional<Candidate> lidar_candidate, visual_candidate;
+  if (lidar) {
+    const std::optional<GateEvent> jump = lidar_gate_.check(t, lidar->T_odom_camera, lidar->information);
+    if (jump) out.gated.push_back(*jump);
+    else lidar_candidate = lidarFactor(node, *lidar, lidar_gate_.restarted());
+  }
+  if (visual) {
+    if (visual->map_id != visual_map_) visual_gate_.reset();
+    visual_map_ = visual->map_id;
+    if (visual->T_new_old) visual_gate_.moveHistory(*visual->T_new_old);
+    const double s = config_.visual_pixel_sigma;
+    const std::optional<GateEvent> jump = visual_gate_.check(t, visual->T_map_camera, visual->information / (s * s));
+    if (jump) out.gated.push_back(*jump);
+    visual_candidate = visualFactor(node, t, *visual, !jump);
+  }
+  std::optional<Candidate> motion;
+  if (camera_nodes_.size() >= 2) motion = motionFactor(node, t);
+  // Start from the best single guess: the LiDAR's, else vision's, else the motion model's.
+  nodes_[static_cast<std::size_t>(node)].T_world_camera =
+      lidar_candidate ? lidar_candidate->T_world_implied
+                      : visual_candidate ? visual_candidate->T_world_implied
+                                         : motion ? motion->T_world_implied : guess;
+  if (motion) accept(motion->factor);
+  if (lidar_candidate) accept(lidar_candidate->factor);
+  if (visual_candidate) accept(visual_candidate->factor);
+  solveWindow(static_cast<int>(nodes_.size()) - 1);
+  out.T_world_camera = nodes_[static_cast<std::size_t>(node)].T_world_camera;
+  out.camera_node = node;
+  out.lidar_used = lidar_candidate.has_value();
+  out.visual_used = visual_candidate.has_value();
+  if (visual_candidate)
+    out.visual_chi_square_per_dof =
+        factorChiSquare(visual_candidate->factor, nodes_) / std::max(1, visual_candidate->rank);
+  return out;
+}
+
+void FusedEstimator::improveLidar(int camera_node, const LidarFrameInput& lidar) {
+  if (camera_node < 0 || static_cast<std::size_t>(camera_node) >= factors_to_.size()) return;
+  for (const int f : factors_to_[static_cast<std::size_t>(camera_node)]) {
+    PoseFactor& factor = factors_[static_cast<std::size_t>(f)];
+    if (factor.source != FactorSource::kLidar) continue;
+    factor.T_from_to = lidar.T_odom_camera;
+    factor.information = lidar.information;
+    if (last_lidar_ && last_lidar_->first == factor.from) last_lidar_->second = lidar;
+  }
+}
+
+}  // namespace lvslam::system

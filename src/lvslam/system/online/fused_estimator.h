@@ -1,0 +1,129 @@
+#pragma once
+// The online estimator of fused mode: one causal T_world_camera per camera
+// frame from both subsystems, each weighted by its own uncertainty, never
+// revised once emitted. A fixed-lag window (window_s) of frame poses is
+// solved per frame (pose_graph.h) with relative-pose factors:
+//  - LiDAR: the odometry's camera pose through the odometry frame's own
+//    node (T_world_odom, one per frame with a LiDAR pose), its covariance
+//    from the ICP's normal equations (a degenerate direction gets no
+//    information); consecutive odometry-frame nodes are tied by the
+//    odometry's drift per metre of path (a random walk about the camera),
+//    so scan-to-map registration errors stay white and only drift accumulates;
+//  - visual: the frame's pose relative to the keyframe it was tracked
+//    against (keyframes stay as nodes, fixed once they leave the window), so
+//    re-observing an old part of the map pulls the output back to it;
+//    information from the tracker's Hessian;
+//  - motion: constant velocity with the robot's acceleration as noise, the
+//    process model that keeps the graph connected and breaks ties.
+// Each subsystem's new pose is first judged against its own previous steps
+// (step_gate.h): a jump its stated uncertainty cannot explain is dropped and
+// logged. A lasting disagreement between the two subsystems is not a jump:
+// it is weighed, and reported by the visual factors' chi-square.
+// World = the LiDAR odometry frame at the first LiDAR pose.
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lvslam/core/trajectory.h"
+#include "lvslam/system/online/pose_graph.h"
+#include "lvslam/system/online/step_gate.h"
+
+namespace lvslam::system {
+
+struct FusedEstimatorConfig {
+  double window_s = 1.5;           // seconds of frames optimised together
+  double visual_pixel_sigma = 3.0;  // the tracker's information is at 1 px (ORB level 0)
+  double lidar_drift_m = 0.005;     // odometry error growth per sqrt(m) of path (random walk)
+  double lidar_drift_deg = 0.03;
+  double motion_accel = 2.0;           // m/s^2 (1 sigma): the platform's acceleration
+  double motion_angular_accel_deg = 360.0;  // deg/s^2 (a wheeled platform's vibration included)
+  int gate_accept_after = 3;  // gated steps in a row before a jump counts as a new start
+  double huber_delta = 3.0;
+  int max_iterations = 8;
+};
+
+// The LiDAR's view of one camera frame (already judged healthy).
+struct LidarFrameInput {
+  Eigen::Isometry3d T_odom_camera = Eigen::Isometry3d::Identity();
+  // Of T_odom_camera, camera-frame right perturbation; zero where degenerate.
+  Matrix6d information = Matrix6d::Zero();
+};
+
+// The visual subsystem's view of one camera frame (admitted by the
+// detection module). Poses in the map's frame as it stands at this frame.
+struct VisualFrameInput {
+  int map_id = 0;
+  Eigen::Isometry3d T_map_camera = Eigen::Isometry3d::Identity();
+  Matrix6d information = Matrix6d::Zero();  // the tracker's, at 1 px (left update of T_camera_map)
+  int keyframe = -1;             // this frame became keyframe `keyframe`
+  // Tracked against this keyframe (not itself), and the pose relative to it.
+  int reference_keyframe = -1;
+  Eigen::Isometry3d T_keyframe_camera = Eigen::Isometry3d::Identity();
+  // The map was corrected in this frame: earlier poses in it are T_new_old * T.
+  std::optional<Eigen::Isometry3d> T_new_old;
+  // The map was initialised in this frame: keyframe id and pose of its first view.
+  std::optional<std::pair<int, StampedPose>> initial_reference;
+};
+
+struct FusedFrameOutput {
+  std::optional<Eigen::Isometry3d> T_world_camera;  // none before the first LiDAR pose
+  int camera_node = -1;                             // the frame's node in the graph
+  bool lidar_used = false, visual_used = false;     // factors of this frame in the graph
+  std::vector<GateEvent> gated;
+  double visual_chi_square_per_dof = -1.0;  // of the accepted visual factor at the solution, -1: none
+};
+
+class FusedEstimator {
+ public:
+  explicit FusedEstimator(const FusedEstimatorConfig& config);
+
+  FusedFrameOutput add(double t, const std::optional<LidarFrameInput>& lidar,
+                       const std::optional<VisualFrameInput>& visual);
+  // A better LiDAR pose of an added frame (interpolated once the next sweep
+  // was registered): replaces its LiDAR factor's measurement. The frame's
+  // output stays what it was; the window's later frames gain.
+  void improveLidar(int camera_node, const LidarFrameInput& lidar);
+
+  // Every node (time, latest estimate), which of them are camera frames
+  // (the others are odometry frames), and the accepted factors: the offline
+  // refinement smooths this graph over the whole run.
+  const std::vector<double>& nodeTimes() const { return times_; }
+  const std::vector<PoseNode>& nodes() const { return nodes_; }
+  const std::vector<int>& cameraNodes() const { return camera_nodes_; }
+  const std::vector<PoseFactor>& factors() const { return factors_; }
+
+ private:
+  struct Candidate {
+    PoseFactor factor;
+    Eigen::Isometry3d T_world_implied;  // the new node's pose the factor implies
+    Matrix6d covariance;                // pseudo-inverse of its information
+    int rank = 0;
+  };
+  int addNode(double t, const Eigen::Isometry3d& T, bool fixed);
+  void accept(const PoseFactor& factor);
+  std::optional<Candidate> lidarFactor(int node, const LidarFrameInput& lidar, bool new_start);
+  // Registers the frame's keyframe role; the factor only when `use`.
+  std::optional<Candidate> visualFactor(int node, double t, const VisualFrameInput& visual, bool use);
+  Candidate motionFactor(int node, double t) const;
+  std::optional<int> visualFrom(double t, const VisualFrameInput& visual, Eigen::Isometry3d& T_from_to) const;
+  Candidate makeCandidate(PoseFactor factor) const;
+  void solveWindow(int newest);
+
+  FusedEstimatorConfig config_;
+  StepGate lidar_gate_, visual_gate_;
+  int visual_map_ = -1;  // the map the visual gate's history is in
+  std::vector<double> times_;
+  std::vector<PoseNode> nodes_;
+  std::vector<PoseFactor> factors_;
+  std::vector<std::vector<int>> factors_to_;  // per node, the accepted factors ending at it
+  std::vector<int> camera_nodes_;             // in frame order
+  // The odometry-frame node of the last LiDAR pose, and that pose.
+  std::optional<std::pair<int, LidarFrameInput>> last_lidar_;
+  // Per visual map: the last node with a visual pose and its map pose.
+  std::map<int, std::pair<int, Eigen::Isometry3d>> last_visual_;
+  std::map<std::pair<int, int>, int> keyframe_nodes_;  // (map, keyframe) -> node
+};
+
+}  // namespace lvslam::system

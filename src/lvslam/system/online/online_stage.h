@@ -1,0 +1,53 @@
+#pragma once
+// Joins the two subsystems' records of each camera frame as they become
+// ready (from either worker's thread) and runs the online output in frame
+// order as soon as a frame is complete, so a pose is out as soon as the
+// data fix it: the visual record after tracking, the LiDAR's when the sweep
+// after the frame is registered. Records each frame's latency (output wall
+// time minus the frame's arrival). Thread-safe; the order of the outputs
+// never depends on thread timing.
+#include <chrono>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "lvslam/system/online/online_output.h"
+
+namespace lvslam::system {
+
+class OnlineStage {
+ public:
+  OnlineStage(std::unique_ptr<OnlineOutput> output, bool has_visual, bool has_lidar);
+
+  // The reading thread: frame `index` arrived at `when`.
+  void frameArrived(std::size_t index, std::chrono::steady_clock::time_point when);
+  void visualReady(std::size_t index, const VisualFrameRecord& record);
+  // The frame's LiDAR pose; called again with a better one (interpolated
+  // between two sweeps), which goes to the output as an improvement when
+  // the frame is out already.
+  void lidarReady(std::size_t index, const LidarFrameRecord& record);
+  // After the run: frames a half never came for (a LiDAR pose that never
+  // became known) are completed with the workers' final records.
+  void finish(const std::vector<VisualFrameRecord>& visual, const std::vector<LidarFrameRecord>& lidar);
+
+  std::vector<FrameOutput> takeFrames();
+  const OnlineOutput& output() const { return *output_; }
+
+ private:
+  struct Pending {
+    std::optional<VisualFrameRecord> visual;
+    std::optional<LidarFrameRecord> lidar;
+  };
+  void runReady();  // with the lock held
+
+  std::unique_ptr<OnlineOutput> output_;
+  bool has_visual_, has_lidar_;
+  std::mutex mutex_;
+  std::map<std::size_t, Pending> pending_;
+  std::vector<std::chrono::steady_clock::time_point> arrivals_;
+  std::vector<FrameOutput> frames_;
+};
+
+}  // namespace lvslam::system

@@ -1,0 +1,139 @@
+#include "lvslam/system/online/pose_graph.h"
+
+#include <array>
+#include <memory>
+
+#include <Eigen/Eigenvalues>
+#include <ceres/autodiff_cost_function.h>
+#include <ceres/loss_function.h>
+#include <ceres/manifold.h>
+#include <ceres/problem.h>
+#include <ceres/product_manifold.h>
+#include <ceres/solver.h>
+
+#include "lvslam/system/online/pose_information.h"
+
+namespace lvslam::system {
+
+namespace {
+
+// Square root of a positive semi-definite information: L^T L = Omega.
+Matrix6d squareRoot(const Matrix6d& information) {
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(0.5 * (information + information.transpose()));
+  const Vector6d lambda = solver.eigenvalues().cwiseMax(0.0);
+  return lambda.cwiseSqrt().asDiagonal() * solver.eigenvectors().transpose();
+}
+
+// Parameter blocks [t_world_camera (3), q_world_camera (x, y, z, w)].
+struct RelativePoseResidual {
+  RelativePoseResidual(const Eigen::Isometry3d& T_from_to, const Matrix6d& information)
+      : t_z(T_from_to.translation()), q_z_inverse(Eigen::Quaterniond(T_from_to.linear()).conjugate()),
+        sqrt_information(squareRoot(information)) {}
+
+  template <typename T>
+  bool operator()(const T* a, const T* b, T* residual) const {
+    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t_a(a), t_b(b);
+    const Eigen::Map<const Eigen::Quaternion<T>> q_a(a + 3), q_b(b + 3);
+    const Eigen::Quaternion<T> q_a_inverse = q_a.conjugate();
+    const Eigen::Quaternion<T> q_ab = q_a_inverse * q_b;
+    const Eigen::Matrix<T, 3, 1> t_ab = q_a_inverse * (t_b - t_a);
+    const Eigen::Quaternion<T> q_z_inv = q_z_inverse.cast<T>();
+    Eigen::Quaternion<T> q_error = q_z_inv * q_ab;
+    if (q_error.w() < T(0)) q_error.coeffs() = -q_error.coeffs();
+    Eigen::Matrix<T, 6, 1> e;
+    e.template head<3>() = q_z_inv * (t_ab - t_z.cast<T>());
+    e.template tail<3>() = T(2.0) * q_error.vec();
+    Eigen::Map<Eigen::Matrix<T, 6, 1>> r(residual);
+    r = sqrt_information.cast<T>() * e;
+    return true;
+  }
+
+  Eigen::Vector3d t_z;
+  Eigen::Quaterniond q_z_inverse;
+  Matrix6d sqrt_information;
+};
+
+using Block = std::array<double, 7>;
+using PoseManifold = ceres::ProductManifold<ceres::EuclideanManifold<3>, ceres::EigenQuaternionManifold>;
+
+Block toBlock(const Eigen::Isometry3d& T) {
+  const Eigen::Quaterniond q(T.linear());
+  return {T.translation().x(), T.translation().y(), T.translation().z(), q.x(), q.y(), q.z(), q.w()};
+}
+
+Eigen::Isometry3d fromBlock(const Block& b) {
+  return makePose(Eigen::Quaterniond(b[6], b[3], b[4], b[5]).normalized(), Eigen::Vector3d(b[0], b[1], b[2]));
+}
+
+}  // namespace
+
+const char* factorSourceName(FactorSource source) {
+  switch (source) {
+    case FactorSource::kLidar: return "lidar";
+    case FactorSource::kVisual: return "visual";
+    case FactorSource::kMotion: break;
+  }
+  return "motion";
+}
+
+Vector6d factorError(const PoseFactor& factor, const std::vector<PoseNode>& nodes) {
+  const Eigen::Isometry3d T_from_to =
+      nodes[static_cast<std::size_t>(factor.from)].T_world_camera.inverse() *
+      nodes[static_cast<std::size_t>(factor.to)].T_world_camera;
+  return poseDifference(factor.T_from_to, T_from_to);
+}
+
+double factorChiSquare(const PoseFactor& factor, const std::vector<PoseNode>& nodes) {
+  const Vector6d e = factorError(factor, nodes);
+  return e.dot(factor.information * e);
+}
+
+bool solvePoseGraph(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>& factors,
+                    const PoseGraphSolveConfig& config) {
+  if (nodes.empty() || factors.empty()) return true;
+  std::vector<Block> blocks;
+  blocks.reserve(nodes.size());
+  for (const PoseNode& node : nodes) blocks.push_back(toBlock(node.T_world_camera));
+  ceres::Problem problem;
+  for (const PoseFactor& f : factors) {
+    auto* cost = new ceres::AutoDiffCostFunction<RelativePoseResidual, 6, 7, 7>(
+        new RelativePoseResidual(f.T_from_to, f.information));
+    problem.AddResidualBlock(cost, new ceres::HuberLoss(config.huber_delta),
+                             blocks[static_cast<std::size_t>(f.from)].data(),
+                             blocks[static_cast<std::size_t>(f.to)].data());
+  }
+  bool any_fixed = false;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    double* block = blocks[i].data();
+    if (!problem.HasParameterBlock(block)) continue;
+    problem.SetManifold(block, new PoseManifold);
+    if (nodes[i].fixed) {
+      problem.SetParameterBlockConstant(block);
+      any_fixed = true;
+    }
+  }
+  if (!any_fixed) {
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      if (problem.HasParameterBlock(blocks[i].data())) {
+        problem.SetParameterBlockConstant(blocks[i].data());
+        break;
+      }
+  }
+  ceres::Solver::Options options;
+  options.linear_solver_type = config.sparse ? ceres::SPARSE_NORMAL_CHOLESKY : ceres::DENSE_NORMAL_CHOLESKY;
+  options.max_num_iterations = config.max_iterations;
+  // Small problems: run to the minimum, not to Ceres' default 1e-6 relative change.
+  options.function_tolerance = 1e-12;
+  options.gradient_tolerance = 1e-14;
+  options.parameter_tolerance = 1e-12;
+  options.num_threads = 1;
+  options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  if (!summary.IsSolutionUsable()) return false;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (!nodes[i].fixed) nodes[i].T_world_camera = fromBlock(blocks[i]);
+  return true;
+}
+
+}  // namespace lvslam::system

@@ -1,0 +1,48 @@
+#pragma once
+// A graph of camera poses tied by relative-pose factors, each with its full
+// information matrix (possibly singular: a direction a subsystem does not
+// observe gets none), solved by Ceres with a Huber kernel. The online
+// estimator solves a window of it per frame, the offline refinement all of it.
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "lvslam/core/se3.h"
+
+namespace lvslam::system {
+
+enum class FactorSource { kLidar, kVisual, kMotion };
+const char* factorSourceName(FactorSource source);
+
+// Measures T_from_to = T_world_from^-1 T_world_to; the information is for the
+// right perturbation of `to` (the residual log(Z^-1 T_from^-1 T_to), as in
+// Ceres' pose_graph_3d example).
+struct PoseFactor {
+  int from = 0, to = 0;  // node indices
+  Eigen::Isometry3d T_from_to = Eigen::Isometry3d::Identity();
+  Matrix6d information = Matrix6d::Zero();
+  FactorSource source = FactorSource::kMotion;
+};
+
+struct PoseNode {
+  Eigen::Isometry3d T_world_camera = Eigen::Isometry3d::Identity();
+  bool fixed = false;
+};
+
+struct PoseGraphSolveConfig {
+  double huber_delta = 3.0;  // on the whitened residual's norm
+  int max_iterations = 10;
+  bool sparse = false;       // a sparse solver for large (offline) graphs
+};
+
+// The factor's residual at the nodes' poses (right tangent at `to`).
+Vector6d factorError(const PoseFactor& factor, const std::vector<PoseNode>& nodes);
+// e^T Omega e at the nodes' poses.
+double factorChiSquare(const PoseFactor& factor, const std::vector<PoseNode>& nodes);
+
+// Optimises the free nodes in place; returns false (nodes unchanged) when
+// the solver failed. A graph without a fixed node is held by its first node.
+bool solvePoseGraph(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>& factors,
+                    const PoseGraphSolveConfig& config);
+
+}  // namespace lvslam::system

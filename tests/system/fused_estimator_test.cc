@@ -1,0 +1,157 @@
+// The fused online estimator on synthetic subsystem estimates with known
+// covariances: the closed-form weighting, the chi-square gate on a jump in
+// either subsystem, and a degenerate LiDAR direction taken from vision.
+#include "lvslam/system/online/fused_estimator.h"
+
+#include <gtest/gtest.h>
+
+namespace lvslam::system {
+namespace {
+
+constexpr double kDt = 1.0 / 15.0;  // a camera at 15 Hz
+
+Eigen::Isometry3d at(double x, double y = 0.0, double z = 0.0) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = Eigen::Vector3d(x, y, z);
+  return T;
+}
+
+Matrix6d isotropic(double sigma_m, double sigma_rad) {
+  Vector6d d;
+  d << Eigen::Vector3d::Constant(1.0 / (sigma_m * sigma_m)), Eigen::Vector3d::Constant(1.0 / (sigma_rad * sigma_rad));
+  return d.asDiagonal();
+}
+
+FusedEstimatorConfig exactConfig() {
+  FusedEstimatorConfig c;
+  c.lidar_drift_m = c.lidar_drift_deg = 0.0;  // only the stated covariances
+  c.visual_pixel_sigma = 1.0;
+  c.huber_delta = 1e6;
+  return c;
+}
+
+LidarFrameInput lidarAt(const Eigen::Isometry3d& T, const Matrix6d& information) { return {T, information}; }
+
+// Frame 0 is keyframe 0 of map 0; later frames are tracked against it.
+VisualFrameInput visualAt(const Eigen::Isometry3d& T_map_camera, const Matrix6d& information, int frame) {
+  VisualFrameInput v;
+  v.T_map_camera = T_map_camera;
+  v.information = information;
+  if (frame == 0) {
+    v.keyframe = 0;
+  } else {
+    v.reference_keyframe = 0;
+    v.T_keyframe_camera = T_map_camera;  // keyframe 0 at the map's origin
+  }
+  return v;
+}
+
+TEST(FusedEstimator, TwoSubsystemsGiveTheClosedFormWeightedMean) {
+  FusedEstimator estimator(exactConfig());
+  const Matrix6d H_lidar = isotropic(0.01, 0.001), H_visual = isotropic(0.005, 0.001);
+  ASSERT_TRUE(estimator.add(0.0, lidarAt(at(0), H_lidar), visualAt(at(0), H_visual, 0)).T_world_camera);
+  // The LiDAR says 10 cm, vision 11 cm along x; the motion model (no
+  // velocity yet) says 0 with sigma 2 m/s x dt.
+  const FusedFrameOutput out = estimator.add(kDt, lidarAt(at(0.10), H_lidar), visualAt(at(0.11), H_visual, 1));
+  ASSERT_TRUE(out.T_world_camera && out.lidar_used && out.visual_used);
+  EXPECT_TRUE(out.gated.empty());
+  // Without drift the odometry frame stays where the first pose put it: the
+  // LiDAR pose enters with its own covariance.
+  const double w_lidar = 1.0 / (0.01 * 0.01), w_visual = 1.0 / (0.005 * 0.005);
+  const double w_motion = 1.0 / ((2.0 * kDt) * (2.0 * kDt));
+  const double expected = (w_lidar * 0.10 + w_visual * 0.11) / (w_lidar + w_visual + w_motion);
+  EXPECT_NEAR(out.T_world_camera->translation().x(), expected, 1e-7);
+  EXPECT_NEAR(out.T_world_camera->translation().y(), 0.0, 1e-9);
+}
+
+struct StraightRun {
+  std::vector<FusedFrameOutput> outputs;
+};
+
+// 30 frames at 0.75 m/s along x; `lidar_offset` / `visual_offset` shift one
+// subsystem's pose at frame `glitch`.
+StraightRun straightRun(const Eigen::Vector3d& lidar_offset, const Eigen::Vector3d& visual_offset, int glitch) {
+  FusedEstimatorConfig config;
+  config.visual_pixel_sigma = 1.0;  // H_visual below is the visual pose's whole information
+  FusedEstimator estimator(config);
+  const Matrix6d H_lidar = isotropic(0.002, 0.0005), H_visual = isotropic(0.004, 0.001);
+  StraightRun run;
+  for (int j = 0; j < 30; ++j) {
+    const double x = 0.05 * j;
+    Eigen::Isometry3d T_lidar = at(x), T_visual = at(x);
+    if (j == glitch) {
+      T_lidar.translation() += lidar_offset;
+      T_visual.translation() += visual_offset;
+    }
+    run.outputs.push_back(estimator.add(kDt * j, lidarAt(T_lidar, H_lidar), visualAt(T_visual, H_visual, j)));
+  }
+  return run;
+}
+
+TEST(FusedEstimator, AJumpInTheLidarIsGatedAndLogged) {
+  const StraightRun run = straightRun(Eigen::Vector3d(0.0, 0.10, 0.0), Eigen::Vector3d::Zero(), 20);
+  const FusedFrameOutput& glitch = run.outputs[20];
+  ASSERT_EQ(glitch.gated.size(), 1u);
+  EXPECT_EQ(glitch.gated[0].source, FactorSource::kLidar);
+  EXPECT_GT(glitch.gated[0].chi_square, glitch.gated[0].threshold);
+  EXPECT_FALSE(glitch.lidar_used);
+  EXPECT_TRUE(glitch.visual_used);
+  EXPECT_LT((glitch.T_world_camera->translation() - Eigen::Vector3d(1.0, 0, 0)).norm(), 0.005);
+  // Only the jump: the steps before it and the return after it pass.
+  for (int j = 0; j < 30; ++j)
+    if (j != 20) EXPECT_TRUE(run.outputs[static_cast<std::size_t>(j)].gated.empty()) << j;
+}
+
+TEST(FusedEstimator, AJumpInVisionIsGatedAndLogged) {
+  const StraightRun run = straightRun(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 0.1), 20);
+  const FusedFrameOutput& glitch = run.outputs[20];
+  ASSERT_EQ(glitch.gated.size(), 1u);
+  EXPECT_EQ(glitch.gated[0].source, FactorSource::kVisual);
+  EXPECT_FALSE(glitch.gated[0].reason.empty());
+  EXPECT_TRUE(glitch.lidar_used);
+  EXPECT_LT((glitch.T_world_camera->translation() - Eigen::Vector3d(1.0, 0, 0)).norm(), 0.003);
+}
+
+// A LiDAR degenerate along x (a corridor): its odometry stood still along x
+// while the robot moved; vision saw the motion. The output follows vision
+// along x and agrees with both across it.
+TEST(FusedEstimator, ADegenerateLidarDirectionTakesTheVisualEstimate) {
+  FusedEstimator estimator(FusedEstimatorConfig{});
+  Matrix6d H_lidar = isotropic(0.002, 0.0005);
+  H_lidar(0, 0) = 0.0;  // nothing along x
+  const Matrix6d H_visual = isotropic(0.004, 0.001);
+  FusedFrameOutput last;
+  for (int j = 0; j < 40; ++j) {
+    const double x = 0.05 * j;
+    last = estimator.add(kDt * j, lidarAt(at(0.0, 0.0, 0.0), H_lidar), visualAt(at(x), H_visual, j));
+    EXPECT_TRUE(last.gated.empty()) << j;
+  }
+  ASSERT_TRUE(last.T_world_camera);
+  EXPECT_NEAR(last.T_world_camera->translation().x(), 0.05 * 39, 0.005);  // the LiDAR says 0
+  EXPECT_NEAR(last.T_world_camera->translation().y(), 0.0, 0.002);
+}
+
+// Vision alone (no LiDAR pose for a while: a drop-out) carries the output.
+TEST(FusedEstimator, ALidarDropOutIsBridgedByVision) {
+  FusedEstimator estimator(FusedEstimatorConfig{});
+  const Matrix6d H_lidar = isotropic(0.002, 0.0005), H_visual = isotropic(0.004, 0.001);
+  FusedFrameOutput out;
+  for (int j = 0; j < 40; ++j) {
+    const double x = 0.05 * j;
+    std::optional<LidarFrameInput> lidar;
+    if (j < 10 || j >= 30) lidar = lidarAt(at(x), H_lidar);
+    out = estimator.add(kDt * j, lidar, visualAt(at(x), H_visual, j));
+    ASSERT_TRUE(out.T_world_camera);
+    EXPECT_NEAR(out.T_world_camera->translation().x(), x, 0.003) << j;
+    EXPECT_EQ(out.lidar_used, j < 10 || j >= 30) << j;  // the gap's step: from the last LiDAR pose
+  }
+}
+
+TEST(FusedEstimator, NothingBeforeTheFirstLidarPose) {
+  FusedEstimator estimator(FusedEstimatorConfig{});
+  EXPECT_FALSE(estimator.add(0.0, std::nullopt, visualAt(at(0), isotropic(0.01, 0.01), 0)).T_world_camera);
+  EXPECT_TRUE(estimator.nodes().empty());
+}
+
+}  // namespace
+}  // namespace lvslam::system

@@ -1,0 +1,88 @@
+// The relative-pose graph of the online estimator against closed forms.
+#include "lvslam/system/online/pose_graph.h"
+
+#include <gtest/gtest.h>
+
+#include "lvslam/system/online/pose_information.h"
+
+namespace lvslam::system {
+namespace {
+
+Eigen::Isometry3d translation(double x, double y, double z) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = Eigen::Vector3d(x, y, z);
+  return T;
+}
+
+Matrix6d diagonal(double t0, double t1, double t2, double r) {
+  Vector6d d;
+  d << t0, t1, t2, r, r, r;
+  return d.asDiagonal();
+}
+
+// Two estimates of the same pose with known diagonal informations: the
+// solution is their information-weighted mean, axis by axis.
+TEST(PoseGraph, TwoFactorsGiveTheInformationWeightedMean) {
+  std::vector<PoseNode> nodes{{Eigen::Isometry3d::Identity(), true}, {translation(0.5, 0.5, 0.5), false}};
+  const Matrix6d a = diagonal(100.0, 400.0, 1.0, 1e4), b = diagonal(300.0, 100.0, 0.0, 1e4);
+  std::vector<PoseFactor> factors{{0, 1, translation(1.0, 2.0, 3.0), a, FactorSource::kLidar},
+                                  {0, 1, translation(1.2, 1.0, -1.0), b, FactorSource::kVisual}};
+  PoseGraphSolveConfig config;
+  config.huber_delta = 1e6;  // quadratic: the closed form
+  config.max_iterations = 50;
+  ASSERT_TRUE(solvePoseGraph(nodes, factors, config));
+  const Eigen::Vector3d t = nodes[1].T_world_camera.translation();
+  EXPECT_NEAR(t.x(), (100.0 * 1.0 + 300.0 * 1.2) / 400.0, 1e-6);
+  EXPECT_NEAR(t.y(), (400.0 * 2.0 + 100.0 * 1.0) / 500.0, 1e-6);
+  EXPECT_NEAR(t.z(), 3.0, 1e-6);  // b says nothing along z
+  EXPECT_NEAR(rotationAngle(nodes[1].T_world_camera), 0.0, 1e-9);
+}
+
+TEST(PoseGraph, FixedNodesStayAndAChainIsExact) {
+  std::vector<PoseNode> nodes{{translation(1, 0, 0), true}, {Eigen::Isometry3d::Identity(), false},
+                              {Eigen::Isometry3d::Identity(), false}};
+  Eigen::Isometry3d step = translation(0.1, 0.0, 0.0);
+  step.linear() = expSO3(Eigen::Vector3d(0.0, 0.0, 0.3));
+  const Matrix6d information = diagonal(1e4, 1e4, 1e4, 1e4);
+  std::vector<PoseFactor> factors{{0, 1, step, information, FactorSource::kLidar},
+                                  {1, 2, step, information, FactorSource::kLidar}};
+  ASSERT_TRUE(solvePoseGraph(nodes, factors, {}));
+  EXPECT_TRUE(nodes[0].T_world_camera.isApprox(translation(1, 0, 0)));
+  const Eigen::Isometry3d expected = translation(1, 0, 0) * step * step;
+  EXPECT_LT((nodes[2].T_world_camera.matrix() - expected.matrix()).norm(), 1e-8);
+  EXPECT_NEAR(factorChiSquare(factors[1], nodes), 0.0, 1e-10);
+}
+
+// A rotation error is measured in the frame of `to`: a right perturbation
+// exp(xi) of the node gives the residual xi.
+TEST(PoseGraph, FactorErrorIsTheRightPerturbation) {
+  const Eigen::Isometry3d T = translation(0.3, -0.2, 1.0);
+  Vector6d xi;
+  xi << 0.001, -0.002, 0.003, 0.0005, -0.0004, 0.0002;
+  std::vector<PoseNode> nodes{{Eigen::Isometry3d::Identity(), true}, {T * expSE3(xi), false}};
+  const PoseFactor f{0, 1, T, Matrix6d::Identity(), FactorSource::kVisual};
+  EXPECT_LT((factorError(f, nodes) - xi).norm(), 1e-6);
+}
+
+TEST(PoseInformation, LidarInformationMovesToTheCameraFrameByTheAdjoint) {
+  // A LiDAR that knows only its own x: the camera (axes rotated, offset) knows
+  // the same physical direction.
+  Eigen::Isometry3d T_camera_lidar = Eigen::Isometry3d::Identity();
+  T_camera_lidar.linear() << 0, -1, 0, 0, 0, -1, 1, 0, 0;
+  T_camera_lidar.translation() = Eigen::Vector3d(0.05, -0.2, 0.1);
+  Matrix6d H_lidar = Matrix6d::Zero();
+  H_lidar(0, 0) = 1.0;
+  const Matrix6d H_camera = lidarToCameraInformation(H_lidar, T_camera_lidar);
+  // A camera-frame shift along the LiDAR's x (the camera's z) is seen fully ...
+  Vector6d along = Vector6d::Zero();
+  along.head<3>() = T_camera_lidar.linear() * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(along.dot(H_camera * along), 1.0, 1e-12);
+  // ... a shift across it not at all.
+  Vector6d across = Vector6d::Zero();
+  across.head<3>() = T_camera_lidar.linear() * Eigen::Vector3d::UnitY();
+  EXPECT_NEAR(across.dot(H_camera * across), 0.0, 1e-12);
+  EXPECT_EQ(pseudoInverse(H_camera).rank, 1);
+}
+
+}  // namespace
+}  // namespace lvslam::system
