@@ -1,5 +1,6 @@
 // The paper-style bench tables: cell rules (x above half lost, n/a without
-// ground truth, fail) and the marked section of docs/benchmarks.md.
+// ground truth, fail), the families suite's tables and verdict, and the
+// marked section of docs/benchmarks.md.
 #include "lvslam/system/bench_table.h"
 
 #include <gtest/gtest.h>
@@ -56,6 +57,113 @@ TEST(BenchTable, TablesHaveOneRowPerSequenceAndOneColumnPerMode) {
             "| room | 0.0105 |  | 0.0094 |\n| gate-night | 0.0200 | x |  |\n");
   const std::string speed = speedTable(rows, columns);
   EXPECT_NE(speed.find("| room | 2.50x, 140 MiB |  | 2.50x, 140 MiB |"), std::string::npos) << speed;
+}
+
+// A families-suite cell: online and refined ATE rmse, vision share, latency.
+BenchCell familyCell(std::optional<double> online, std::optional<double> refined, std::optional<double> vision) {
+  BenchCell c = cell(std::nullopt, 0.0);
+  c.ate_rmse_m = online;
+  c.refined_ate_rmse_m = refined;
+  c.vision_share = vision;
+  c.latency_median_ms = 132.96;
+  return c;
+}
+
+BenchCell failedCell() {
+  BenchCell c = familyCell(0.01, 0.01, 0.5);
+  c.failure = "lvslam: error: ...";
+  return c;
+}
+
+TEST(BenchTable, FamilyCellsShowOnlineAndRefinedAteAndTheVisionShare) {
+  EXPECT_EQ(familyAccuracyCellText(familyCell(0.01234, 0.00987, std::nullopt)), "0.0123 / 0.0099");
+  EXPECT_EQ(familyAccuracyCellText(familyCell(0.01234, 0.00987, 0.627)), "0.0123 / 0.0099, 63 %");
+  EXPECT_EQ(familyAccuracyCellText(familyCell(0.01234, std::nullopt, 1.0)), "0.0123 / n/a, 100 %");
+  EXPECT_EQ(familyAccuracyCellText(failedCell()), "fail");
+  BenchCell lost = familyCell(0.5, 0.4, 0.3);
+  lost.lost_fraction = 0.7;
+  EXPECT_EQ(familyAccuracyCellText(lost), "x");
+  EXPECT_EQ(familyAccuracyCellText(std::nullopt), "");
+}
+
+TEST(BenchTable, FamilyTablesHaveOneRowPerSeed) {
+  BenchCell no_latency = familyCell(0.0105, 0.0098, std::nullopt);
+  no_latency.latency_median_ms.reset();
+  const std::vector<BenchRow> rows = {
+      {"1", {{"lidar", familyCell(0.0105, 0.0098, std::nullopt)}, {"fused", familyCell(0.0094, std::nullopt, 0.63)}}},
+      {"2", {{"lidar", no_latency}, {"fused", failedCell()}}}};
+  const std::vector<std::string> columns = {"lidar", "fused"};
+  EXPECT_EQ(familyAccuracyTable(rows, columns),
+            "| seed | lidar | fused |\n|---|---:|---:|\n"
+            "| 1 | 0.0105 / 0.0098 | 0.0094 / n/a, 63 % |\n| 2 | 0.0105 / 0.0098 | fail |\n");
+  EXPECT_EQ(familySpeedTable(rows, columns),
+            "| seed | lidar | fused |\n|---|---:|---:|\n"
+            "| 1 | 2.50x, 133 ms, 140 MiB | 2.50x, 133 ms, 140 MiB |\n| 2 | 2.50x, n/a, 140 MiB | fail |\n");
+}
+
+TEST(BenchTable, MeanRowAveragesTheFamilyFigures) {
+  BenchCell slow = familyCell(0.03, std::nullopt, 0.8);
+  slow.latency_median_ms = 200.0;
+  const std::vector<BenchRow> rows = {{"1", {{"fused", familyCell(0.01, 0.008, 0.6)}}}, {"2", {{"fused", slow}}}};
+  const BenchCell mean = meanRow(rows, {"fused"}, "mean").cells.at("fused");
+  EXPECT_NEAR(*mean.ate_rmse_m, 0.02, 1e-12);
+  EXPECT_FALSE(mean.refined_ate_rmse_m);  // seed 2 has none: no mean of one seed under the others' name
+  EXPECT_NEAR(*mean.vision_share, 0.7, 1e-12);
+  EXPECT_NEAR(*mean.latency_median_ms, (132.96 + 200.0) / 2.0, 1e-12);
+  EXPECT_EQ(familyAccuracyCellText(mean), "0.0200 / n/a, 70 %");
+}
+
+BenchRow modes(std::optional<BenchCell> lidar, std::optional<BenchCell> visual, std::optional<BenchCell> fused) {
+  BenchRow row{"mean", {}};
+  if (lidar) row.cells["lidar"] = *lidar;
+  if (visual) row.cells["visual"] = *visual;
+  if (fused) row.cells["fused"] = *fused;
+  return row;
+}
+
+TEST(BenchTable, VerdictComparesFusedWithTheBetterSingleMode) {
+  // Visual is the better single mode (0.02 < 0.05); fused 0.015 is 25 % below it.
+  const FusionVerdict better = fusionVerdict(modes(familyCell(0.05, 0.04, std::nullopt), familyCell(0.02, 0.02, 0.9),
+                                                   familyCell(0.015, 0.01, 0.7)));
+  EXPECT_TRUE(better.fused_beats);
+  EXPECT_EQ(better.better_single, "visual");
+  EXPECT_NEAR(*better.gain_percent, 25.0, 1e-9);
+  EXPECT_EQ(better.text, "yes, 25.0 % below visual");
+  // LiDAR better (0.01); fused 0.0125 is 25 % above it (the refined 0.005 does not count).
+  const FusionVerdict worse = fusionVerdict(modes(familyCell(0.01, 0.01, std::nullopt), familyCell(0.02, 0.02, 0.9),
+                                                  familyCell(0.0125, 0.005, 0.7)));
+  EXPECT_FALSE(worse.fused_beats);
+  EXPECT_EQ(worse.better_single, "lidar");
+  EXPECT_NEAR(*worse.gain_percent, -25.0, 1e-9);
+  EXPECT_EQ(worse.text, "no, 25.0 % above lidar");
+}
+
+TEST(BenchTable, VerdictSkipsSingleModesThatFailOrLoseTrack) {
+  BenchCell lost = familyCell(0.001, 0.001, 0.2);
+  lost.lost_fraction = 0.8;
+  // Visual lost more than half: its tiny ATE is no contender; LiDAR 0.04 is.
+  const FusionVerdict v = fusionVerdict(modes(familyCell(0.04, 0.04, std::nullopt), lost, familyCell(0.03, 0.03, 0.5)));
+  EXPECT_EQ(v.text, "yes, 25.0 % below lidar");
+  EXPECT_EQ(fusionVerdict(modes(failedCell(), lost, familyCell(0.03, 0.03, 0.5))).text,
+            "yes (neither single mode tracks)");
+  EXPECT_EQ(fusionVerdict(modes(familyCell(0.04, 0.04, std::nullopt), lost, failedCell())).text, "no (fused fail)");
+  EXPECT_EQ(fusionVerdict(modes(familyCell(0.04, 0.04, std::nullopt), lost, lost)).text, "no (fused x)");
+  EXPECT_EQ(fusionVerdict(modes(familyCell(0.04, 0.04, std::nullopt), lost, std::nullopt)).text,
+            "no (fused not run)");
+  EXPECT_EQ(fusionVerdict(modes(familyCell(0.04, 0.04, std::nullopt), lost, familyCell(std::nullopt, 0.03, 0.5))).text,
+            "no (fused n/a)");
+}
+
+TEST(BenchTable, SummaryHasOneRowPerFamily) {
+  const std::vector<FamilySummary> families = {
+      {"corridor", "LiDAR",
+       modes(familyCell(0.20, 0.15, std::nullopt), familyCell(0.10, 0.09, 0.95), familyCell(0.08, std::nullopt, 0.9))},
+      {"night", "camera", modes(familyCell(0.01, 0.01, std::nullopt), failedCell(), familyCell(0.011, 0.009, 0.1))}};
+  EXPECT_EQ(familySummaryTable(families),
+            "| family | weaker sensor | lidar | visual | fused | fused, refined | fused beats the better single mode |\n"
+            "|---|---|---:|---:|---:|---:|---|\n"
+            "| corridor | LiDAR | 0.2000 | 0.1000 | 0.0800 | n/a | yes, 20.0 % below visual |\n"
+            "| night | camera | 0.0100 | fail | 0.0110 | 0.0090 | no, 10.0 % above lidar |\n");
 }
 
 TEST(BenchTable, MarkedSectionIsReplacedInPlaceOrAppended) {
