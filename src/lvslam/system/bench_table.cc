@@ -88,6 +88,14 @@ std::optional<double> contender(const BenchRow& row, const std::string& column) 
   return cell->ate_rmse_m;
 }
 
+std::string verdictText(const FamilySummary& family) {
+  std::string text = fusionVerdict(family.row).text;
+  if (family.seed_rows.size() < 2) return text;
+  const auto wins = std::count_if(family.seed_rows.begin(), family.seed_rows.end(),
+                                  [](const BenchRow& seed) { return fusionVerdict(seed).fused_beats; });
+  return text + fmt::format("; {} of {} seeds", wins, family.seed_rows.size());
+}
+
 }  // namespace
 
 std::string accuracyCellText(const std::optional<BenchCell>& cell) {
@@ -176,7 +184,7 @@ std::string familySummaryTable(const std::vector<FamilySummary>& families) {
     text += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", f.family, f.weaker_sensor,
                         markedMetres(cellOf(f.row, "lidar"), online), markedMetres(cellOf(f.row, "visual"), online),
                         markedMetres(fused, online), markedMetres(fused, &BenchCell::refined_ate_rmse_m),
-                        fusionVerdict(f.row).text);
+                        verdictText(f));
   }
   return text;
 }
