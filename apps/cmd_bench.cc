@@ -1,12 +1,17 @@
-// `lvslam bench`: the simulated suite (room, hall, gate, gate at night, room
-// with a camera blackout) and any sequence folders given, in the modes
-// lidar, visual and fused plus the ablations of the paper's contributions;
-// prints the paper-style tables and writes them into docs/benchmarks.md.
-// Each run is its own `lvslam run` process, so its peak memory is its own.
+// `lvslam bench`: a simulated suite in the modes lidar, visual and fused plus
+// the ablations of the paper's contributions; prints the tables and writes
+// them into docs/benchmarks.md. Two suites: `classic` (room, hall, gate, gate
+// at night, room with a camera blackout, and any sequence folders given;
+// the paper-style tables) and `families` (sim/families.h: scenes where one
+// sensor is the weaker one, seeds 1..N, a table per family and a summary that
+// says whether fused beats the better single mode). Each run is its own
+// `lvslam run` process, so its peak memory is its own.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cctype>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -16,10 +21,12 @@
 #include <thread>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "command.h"
 #include "lvslam/core/error.h"
 #include "lvslam/core/yaml_config.h"
+#include "lvslam/sim/families.h"
 #include "lvslam/sim/simulate_sequence.h"
 #include "lvslam/system/bench_table.h"
 
@@ -30,14 +37,18 @@ namespace fs = std::filesystem;
 namespace {
 
 struct BenchArgs {
+  std::string suite = "classic";
   std::vector<std::string> sequences;
+  std::vector<std::string> families;  // families suite: these only (default all)
+  bool quick = false;                 // families suite: one seed, 15 s unless --duration
   double duration = 60.0;
+  bool duration_given = false;
   std::string work_dir = "out/bench";
   std::string config_path = "config/sim.yaml";
   std::string doc_path = "docs/benchmarks.md";
   bool no_doc = false;
   bool no_ablations = false;
-  int seeds = 1;  // room, hall and gate with seeds 1..seeds
+  int seeds = 1;  // classic: room, hall and gate with seeds 1..seeds; families: every family
 };
 
 struct Column {
@@ -139,6 +150,16 @@ std::string lastLine(const fs::path& path) {
   return last;
 }
 
+// The number at `path` below `node`; none when a key is absent or null
+// (stats.json writes null for a figure it has no data for). Recursive, not a
+// loop reassigning one node: assigning a yaml-cpp node overwrites the node it
+// shares with the document.
+std::optional<double> findNumber(const YamlConfig& node, const std::vector<std::string>& path, std::size_t depth = 0) {
+  const std::optional<YamlConfig> child = node.find(path[depth]);
+  if (!child) return std::nullopt;
+  return depth + 1 == path.size() ? std::optional(child->asDouble()) : findNumber(*child, path, depth + 1);
+}
+
 system::BenchCell runCell(const std::string& sequence, const Column& column, const std::string& config,
                           const fs::path& out) {
   fs::create_directories(out);
@@ -154,8 +175,13 @@ system::BenchCell runCell(const std::string& sequence, const Column& column, con
   cell.lost_fraction = summary.at("lost_fraction").asDouble();
   cell.real_time_factor = summary.at("real_time_factor").asDouble();
   cell.peak_rss_mib = summary.at("peak_rss_mib").asDouble();
-  if (const auto accuracy = summary.find("accuracy"))
-    cell.ate_mean_m = accuracy->at("aligned_mean_translation_error").asDouble();
+  cell.ate_mean_m = findNumber(summary, {"accuracy", "aligned_mean_translation_error"});
+  cell.ate_rmse_m = findNumber(summary, {"accuracy", "ate", "rmse"});
+  cell.refined_ate_rmse_m = findNumber(summary, {"accuracy_refined", "ate", "rmse"});
+  cell.latency_median_ms = findNumber(summary, {"latency_ms", "median"});
+  const double images = summary.at("images").asDouble();
+  if (summary.at("mode").asString() != "lidar" && images > 0)
+    cell.vision_share = summary.at("visual_output_frames").asDouble() / images;
   return cell;
 }
 
@@ -193,11 +219,48 @@ std::string report(const std::vector<system::BenchRow>& rows, const std::vector<
       command, machine(), today(), duration, system::accuracyTable(rows, names), system::speedTable(rows, names));
 }
 
-int runBench(const BenchArgs& args, const std::string& command) {
-  const fs::path work(args.work_dir);
-  const std::vector<Column> cols = columns(!args.no_ablations);
+std::vector<std::string> columnNames(const std::vector<Column>& cols) {
   std::vector<std::string> names;
   for (const Column& c : cols) names.push_back(c.name);
+  return names;
+}
+
+using CellText = std::string (*)(const std::optional<system::BenchCell>&);
+
+// Every column on one sequence, each run's output under runs_dir/<column
+// folder>; `progress` shows each result as it comes.
+system::BenchRow runRow(const std::string& label, const std::string& dir, const std::vector<Column>& cols,
+                        const std::string& config, const fs::path& runs_dir, CellText progress) {
+  system::BenchRow row{label, {}};
+  for (const Column& c : cols) {
+    std::cout << fmt::format("{:<16} {:<27}", label, c.name) << std::flush;
+    // Sequences without the sensors of a mode are skipped by `run` with an error: shown as fail.
+    row.cells[c.name] = runCell(dir, c, config, runs_dir / c.folder);
+    std::cout << progress(row.cells[c.name]) << "\n";
+  }
+  return row;
+}
+
+// Prints the tables and, unless --no-doc, writes them into the document's
+// marked section (the previous suite's tables are replaced).
+int publish(const BenchArgs& args, const std::string& text) {
+  std::cout << "\n" << text;
+  if (args.no_doc) return 0;
+  std::stringstream document;
+  if (std::ifstream in{args.doc_path}) document << in.rdbuf();
+  std::ofstream out(args.doc_path);
+  out << system::replaceMarkedSection(document.str(), text);
+  if (!out) throw Error(args.doc_path, "cannot write the file");
+  std::cout << "wrote the tables into " << args.doc_path << "\n";
+  return 0;
+}
+
+int runClassic(const BenchArgs& args, const std::string& command) {
+  for (const auto& [option, given] : {std::pair{"--families", !args.families.empty()}, std::pair{"--quick", args.quick}})
+    if (given) throw Error(option, "only with --suite families");
+  const fs::path work(args.work_dir);
+  const std::vector<Column> cols = columns(!args.no_ablations);
+  const std::vector<std::string> names = columnNames(cols);
   const std::string config = fs::exists(args.config_path) ? args.config_path : "";
   std::vector<std::pair<std::string, std::string>> sequences;  // row name, folder
   std::set<std::string> daylight_names;  // the rows the mean over seeds covers
@@ -210,59 +273,158 @@ int runBench(const BenchArgs& args, const std::string& command) {
     sequences.push_back({fs::path(dir).filename().string(), dir});
   }
   std::vector<system::BenchRow> rows;
-  for (const auto& [name, dir] : sequences) {
-    system::BenchRow row{name, {}};
-    for (const Column& c : cols) {
-      std::cout << fmt::format("{:<16} {:<27}", name, c.name) << std::flush;
-      // Sequences without the sensors of a mode are skipped by `run` with an error: shown as fail.
-      row.cells[c.name] = runCell(dir, c, config, work / "runs" / name / c.folder);
-      std::cout << system::accuracyCellText(row.cells[c.name]) << "\n";
-    }
-    rows.push_back(row);
-  }
+  for (const auto& [name, dir] : sequences) rows.push_back(runRow(name, dir, cols, config, work / "runs" / name, system::accuracyCellText));
   if (args.seeds > 1) {
     std::vector<system::BenchRow> daylight;
     for (const system::BenchRow& row : rows)
       if (daylight_names.count(row.sequence)) daylight.push_back(row);
     rows.push_back(system::meanRow(daylight, names, fmt::format("mean, room/hall/gate x seeds 1-{}", args.seeds)));
   }
-  const std::string text = report(rows, names, command, args.duration);
-  std::cout << "\n" << text;
-  if (args.no_doc) return 0;
-  std::stringstream document;
-  if (std::ifstream in{args.doc_path}) document << in.rdbuf();
-  std::ofstream out(args.doc_path);
-  out << system::replaceMarkedSection(document.str(), text);
-  if (!out) throw Error(args.doc_path, "cannot write the file");
-  std::cout << "wrote the tables into " << args.doc_path << "\n";
-  return 0;
+  return publish(args, report(rows, names, command, args.duration));
+}
+
+std::string weakerSensorText(sim::WeakerSensor weaker) {
+  switch (weaker) {
+    case sim::WeakerSensor::kLidar: return "LiDAR";
+    case sim::WeakerSensor::kCamera: return "camera";
+    case sim::WeakerSensor::kNeither: break;
+  }
+  return "neither";
+}
+
+// The purpose line (lower case in sim::families()) as a sentence.
+std::string sentence(std::string text) {
+  if (!text.empty()) text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
+  return text + ".";
+}
+
+// "corridor: LiDAR weaker", "room: both sensors good".
+std::string familyHeading(const sim::FamilyInfo& family) {
+  if (family.weaker == sim::WeakerSensor::kNeither) return family.name + ": both sensors good";
+  return family.name + ": " + weakerSensorText(family.weaker) + " weaker";
+}
+
+struct FamilyResult {
+  sim::FamilyInfo info;
+  std::vector<system::BenchRow> rows;  // one per seed, then their mean when more than one
+};
+
+// The families to run, in the order of sim::families() (names checked by the option).
+std::vector<sim::FamilyInfo> chosenFamilies(const std::vector<std::string>& names) {
+  std::vector<sim::FamilyInfo> chosen;
+  for (const sim::FamilyInfo& f : sim::families())
+    if (names.empty() || std::find(names.begin(), names.end(), f.name) != names.end()) chosen.push_back(f);
+  return chosen;
+}
+
+FamilyResult runFamily(const sim::FamilyInfo& family, int seeds, double duration, const std::vector<Column>& cols,
+                       const std::string& config, const fs::path& work) {
+  FamilyResult result{family, {}};
+  for (int seed = 1; seed <= seeds; ++seed) {
+    SuiteSequence s{fmt::format("{}-seed{}", family.name, seed), sim::familyOptions(family.name)};
+    s.options.duration = duration;
+    s.options.seed = static_cast<std::uint64_t>(seed);
+    // "family-" keeps these apart from the classic suite's room and gate folders.
+    const std::string dir = ensureSimulated({"family-" + s.name, s.options}, work / "sequences");
+    system::BenchRow row =
+        runRow(s.name, dir, cols, config, work / "runs" / fs::path(dir).filename(), system::familyAccuracyCellText);
+    row.sequence = std::to_string(seed);
+    result.rows.push_back(row);
+  }
+  if (seeds > 1) result.rows.push_back(system::meanRow(result.rows, columnNames(cols), "mean"));
+  return result;
+}
+
+std::string familiesReport(const std::vector<FamilyResult>& results, const std::vector<std::string>& names,
+                           const std::string& command, double duration, int seeds) {
+  std::vector<system::FamilySummary> summary;
+  for (const FamilyResult& r : results) {
+    const std::vector<system::BenchRow> seed_rows(r.rows.begin(), r.rows.begin() + seeds);
+    summary.push_back({r.info.name, weakerSensorText(r.info.weaker), r.rows.back(), seed_rows});  // back: the mean
+  }
+  std::string text = fmt::format(
+      "### Scenario families (`lvslam bench --suite families`)\n\n"
+      "Command: `{}` on {}, {}. Simulated family sequences (docs/simulator.md) of {:g} s, seed{} {}.\n\n"
+      "Summary: ATE rmse (m) of the online trajectory{}; fused beats the better single mode when its online ATE is "
+      "lower, by the percentage of the better single mode's ATE (a mode that fails or loses track for more than half "
+      "of its frames, x, is no contender).\n\n{}",
+      command, machine(), today(), duration, seeds > 1 ? "s" : "", seeds > 1 ? fmt::format("1-{}", seeds) : "1",
+      seeds > 1 ? ", mean over the seeds" : "", system::familySummaryTable(summary));
+  text +=
+      "\nPer family, one row per seed: ATE rmse (m) of the online trajectory / of the offline refinement, and the "
+      "share of camera frames whose pose vision entered; then the real-time factor (sequence seconds per wall "
+      "second), the median latency of the online output and the peak memory of each run.\n";
+  for (const FamilyResult& r : results)
+    text += fmt::format("\n#### {}\n\n{}\n\nAccuracy:\n\n{}\nSpeed:\n\n{}", familyHeading(r.info), sentence(r.info.purpose),
+                        system::familyAccuracyTable(r.rows, names), system::familySpeedTable(r.rows, names));
+  return text;
+}
+
+int runFamilies(const BenchArgs& args, const std::string& command) {
+  if (!args.sequences.empty()) throw Error(args.sequences.front(), "sequence folders go with --suite classic");
+  // --quick: a smoke run of every family (one seed, 15 s) unless told otherwise.
+  const double duration = args.quick && !args.duration_given ? 15.0 : args.duration;
+  const int seeds = args.quick ? 1 : args.seeds;
+  const std::vector<Column> cols = columns(!args.no_ablations);
+  const std::string config = fs::exists(args.config_path) ? args.config_path : "";
+  std::vector<FamilyResult> results;
+  for (const sim::FamilyInfo& family : chosenFamilies(args.families))
+    results.push_back(runFamily(family, seeds, duration, cols, config, fs::path(args.work_dir)));
+  return publish(args, familiesReport(results, columnNames(cols), command, duration, seeds));
+}
+
+// The command as the report quotes it (options that change the figures).
+std::string quotedCommand(const BenchArgs& args) {
+  std::string command = "lvslam bench";
+  if (args.suite != "classic") command += " --suite " + args.suite;
+  if (args.quick) command += " --quick";
+  if (!args.families.empty()) command += " --families " + fmt::format("{}", fmt::join(args.families, ","));
+  if (!args.quick || args.duration_given) command += fmt::format(" --duration {:g}", args.duration);
+  if (args.no_ablations) command += " --no-ablations";
+  if (args.seeds > 1) command += fmt::format(" --seeds {}", args.seeds);
+  for (const std::string& s : args.sequences) command += " " + s;
+  return command;
 }
 
 }  // namespace
 
 void addBenchCommand(CLI::App& app, CommandAction& action) {
   CLI::App* cmd = app.add_subcommand(
-      "bench", "Run the simulated suite (room, hall, gate, gate at night, room with a camera blackout) and any "
-               "sequence folders given in the modes lidar, visual, fused and the fused ablations; print the "
-               "paper-style tables and write them into docs/benchmarks.md");
+      "bench", "Run a simulated suite in the modes lidar, visual, fused and the fused ablations; print the tables and "
+               "write them into docs/benchmarks.md. --suite classic (the default): room, hall, gate, gate at night, "
+               "room with a camera blackout and any sequence folders given, in the paper's tables. --suite families: "
+               "the scenario families (lvslam simulate --family) with seeds 1..N, a table per family and a summary "
+               "of whether fused beats the better single mode");
   auto args = std::make_shared<BenchArgs>();
-  cmd->add_option("sequences", args->sequences, "More sequence folders (docs/sequence-format.md)");
-  cmd->add_option("--duration", args->duration, "Seconds of each simulated sequence")->default_val(60.0)->check(CLI::PositiveNumber);
+  cmd->add_option("--suite", args->suite, "classic or families")
+      ->default_val("classic")
+      ->check(CLI::IsMember({"classic", "families"}));
+  cmd->add_option("sequences", args->sequences, "More sequence folders (docs/sequence-format.md; classic suite)");
+  cmd->add_option("--families", args->families, "Families suite: these families only, comma-separated (default all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(sim::familyNames()));
+  CLI::Option* quick =
+      cmd->add_flag("--quick", args->quick, "Families suite: a smoke run, one seed and 15 s (unless --duration)");
+  CLI::Option* duration = cmd->add_option("--duration", args->duration, "Seconds of each simulated sequence")
+                              ->default_val(60.0)
+                              ->check(CLI::PositiveNumber);
   cmd->add_option("--work-dir", args->work_dir, "Simulated sequences and run outputs")->default_val("out/bench");
   cmd->add_option("--config", args->config_path, "Configuration of every run")->default_val("config/sim.yaml");
   cmd->add_option("--doc", args->doc_path, "Markdown file whose bench section is rewritten")->default_val("docs/benchmarks.md");
   cmd->add_flag("--no-doc", args->no_doc, "Print the tables only");
   cmd->add_flag("--no-ablations", args->no_ablations, "Modes lidar, visual and fused only");
-  cmd->add_option("--seeds", args->seeds, "Run room, hall and gate with seeds 1..N and add their mean row")
+  cmd->add_option("--seeds", args->seeds,
+                  "Classic: run room, hall and gate with seeds 1..N and add their mean row; families: every family "
+                  "with seeds 1..N and a mean row")
       ->default_val(1)
-      ->check(CLI::Range(1, 20));
-  cmd->callback([&action, args] {
-    // The command as the report quotes it (options that change the figures).
-    std::string command = fmt::format("lvslam bench --duration {:g}", args->duration);
-    if (args->no_ablations) command += " --no-ablations";
-    if (args->seeds > 1) command += fmt::format(" --seeds {}", args->seeds);
-    for (const std::string& s : args->sequences) command += " " + s;
-    action = [args, command] { return runBench(*args, command); };
+      ->check(CLI::Range(1, 20))
+      ->excludes(quick);
+  cmd->callback([&action, args, duration] {
+    args->duration_given = duration->count() > 0;
+    const std::string command = quotedCommand(*args);
+    action = [args, command] {
+      return args->suite == "families" ? runFamilies(*args, command) : runClassic(*args, command);
+    };
   });
 }
 
