@@ -5,7 +5,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -132,6 +135,40 @@ TEST(Cli, AllNanScansAreSurvivedAndReported) {
   const RunResult r = runLvslam(dir, "run --sequence seq --out out");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("lost"), std::string::npos) << r.out;
+}
+
+TEST(Cli, BenchFamiliesOptionsAreCheckedBeforeAnyRun) {
+  TempDir dir;
+  const RunResult unknown = runLvslam(dir, "bench --suite families --families room,moon --no-doc");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("--families"), std::string::npos) << unknown.err;
+  const RunResult classic = runLvslam(dir, "bench --quick --no-doc --work-dir work");
+  EXPECT_EQ(classic.exit_code, 2);
+  EXPECT_EQ(lines(classic.err), 1) << classic.err;
+  EXPECT_NE(classic.err.find("--quick"), std::string::npos) << classic.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "work")) << "nothing simulated";
+}
+
+// The families suite's quick form end to end on one short family (about 10 s
+// on 2 cores): the summary row names the family and has numbers, and the
+// document gets the tables while its hand-written text stays.
+TEST(Cli, BenchFamiliesQuickRunsOneFamilyEndToEnd) {
+  TempDir dir;
+  dir.write("bench.md", "# Benchmarks\n\nhand-written\n");
+  const RunResult r = runLvslam(dir, std::string("bench --suite families --families room --quick --duration 3 "
+                                                 "--no-ablations --work-dir work --doc bench.md --config '") +
+                                         LVSLAM_SOURCE_DIR + "/config/sim.yaml'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::regex summary(R"(\| room \| neither \| 0\.\d{4} \| (0\.\d{4}|x) \| 0\.\d{4} \| 0\.\d{4} \| )"
+                           R"((yes|no), \d+\.\d % (below|above) (lidar|visual) \|)");
+  EXPECT_TRUE(std::regex_search(r.out, summary)) << r.out;
+  EXPECT_NE(r.out.find("#### room: both sensors good"), std::string::npos) << r.out;
+  const std::regex seed_row(R"(\| 1 \| 0\.\d{4} / 0\.\d{4} \| .* \| 0\.\d{4} / 0\.\d{4}, \d+ % \|)");
+  EXPECT_TRUE(std::regex_search(r.out, seed_row)) << r.out;
+  std::ifstream doc(dir.file("bench.md"));
+  const std::string text{std::istreambuf_iterator<char>(doc), std::istreambuf_iterator<char>()};
+  EXPECT_EQ(text.rfind("# Benchmarks\n\nhand-written\n", 0), 0u) << text;
+  EXPECT_NE(text.find("#### room: both sensors good"), std::string::npos) << text;
 }
 
 }  // namespace
