@@ -256,8 +256,8 @@ int publish(const BenchArgs& args, const std::string& text) {
 }
 
 int runClassic(const BenchArgs& args, const std::string& command) {
-  for (const auto& [option, given] : {std::pair{"--families", !args.families.empty()}, std::pair{"--quick", args.quick}})
-    if (given) throw Error(option, "only with --suite families");
+  if (!args.families.empty()) throw Error("--families", "only with --suite families");
+  if (args.quick) throw Error("--quick", "only with --suite families");
   const fs::path work(args.work_dir);
   const std::vector<Column> cols = columns(!args.no_ablations);
   const std::vector<std::string> names = columnNames(cols);
@@ -273,7 +273,8 @@ int runClassic(const BenchArgs& args, const std::string& command) {
     sequences.push_back({fs::path(dir).filename().string(), dir});
   }
   std::vector<system::BenchRow> rows;
-  for (const auto& [name, dir] : sequences) rows.push_back(runRow(name, dir, cols, config, work / "runs" / name, system::accuracyCellText));
+  for (const auto& [name, dir] : sequences)
+    rows.push_back(runRow(name, dir, cols, config, work / "runs" / name, system::accuracyCellText));
   if (args.seeds > 1) {
     std::vector<system::BenchRow> daylight;
     for (const system::BenchRow& row : rows)
@@ -355,8 +356,9 @@ std::string familiesReport(const std::vector<FamilyResult>& results, const std::
       "share of camera frames whose pose vision entered; then the real-time factor (sequence seconds per wall "
       "second), the median latency of the online output and the peak memory of each run.\n";
   for (const FamilyResult& r : results)
-    text += fmt::format("\n#### {}\n\n{}\n\nAccuracy:\n\n{}\nSpeed:\n\n{}", familyHeading(r.info), sentence(r.info.purpose),
-                        system::familyAccuracyTable(r.rows, names), system::familySpeedTable(r.rows, names));
+    text += fmt::format("\n#### {}\n\n{}\n\nAccuracy:\n\n{}\nSpeed:\n\n{}", familyHeading(r.info),
+                        sentence(r.info.purpose), system::familyAccuracyTable(r.rows, names),
+                        system::familySpeedTable(r.rows, names));
   return text;
 }
 

@@ -159,10 +159,11 @@ TEST(BenchTable, SummaryHasOneRowPerFamily) {
       {"corridor", "LiDAR",
        modes(familyCell(0.20, 0.15, std::nullopt), familyCell(0.10, 0.09, 0.95), familyCell(0.08, std::nullopt, 0.9)),
        {}},
-      {"night", "camera", modes(familyCell(0.01, 0.01, std::nullopt), failedCell(), familyCell(0.011, 0.009, 0.1)), {}}};
+      {"night", "camera", modes(familyCell(0.01, 0.01, std::nullopt), failedCell(), familyCell(0.011, 0.009, 0.1)),
+       {}}};
   EXPECT_EQ(familySummaryTable(families),
-            "| family | weaker sensor | lidar | visual | fused | fused, refined | fused beats the better single mode |\n"
-            "|---|---|---:|---:|---:|---:|---|\n"
+            "| family | weaker sensor | lidar | visual | fused | fused, refined "
+            "| fused beats the better single mode |\n|---|---|---:|---:|---:|---:|---|\n"
             "| corridor | LiDAR | 0.2000 | 0.1000 | 0.0800 | n/a | yes, 20.0 % below visual |\n"
             "| night | camera | 0.0100 | fail | 0.0110 | 0.0090 | no, 10.0 % above lidar |\n");
 }
@@ -174,7 +175,8 @@ TEST(BenchTable, SummaryOverSeedsJudgesTheMeanAndCountsTheSeedsFusedWins) {
   const std::vector<std::string> columns = {"lidar", "visual", "fused"};
   const BenchRow mean = meanRow(seeds, columns, "mean");  // fused 0.009 against lidar 0.010
   const std::string table = familySummaryTable({{"gate", "neither", mean, seeds}});
-  EXPECT_NE(table.find("| gate | neither | 0.0100 | 0.0200 | 0.0090 | 0.0075 | yes, 10.0 % below lidar; 1 of 2 seeds |"),
+  EXPECT_NE(table.find("| gate | neither | 0.0100 | 0.0200 | 0.0090 | 0.0075 "
+                       "| yes, 10.0 % below lidar; 1 of 2 seeds |"),
             std::string::npos)
       << table;
 }
