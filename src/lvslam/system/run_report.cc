@@ -54,6 +54,8 @@ std::string frameJson(const PipelineRecords& records, const SystemOutput& output
   if (!f.problem.empty()) o.addString("problem", f.problem);
   if (f.fused) o.addRaw("fused_with_lidar", "true");
   if (f.visual_chi_square_per_dof >= 0.0) o.addNumber("visual_chi2_per_dof", f.visual_chi_square_per_dof);
+  if (f.lidar_noise_scale != 1.0) o.addNumber("lidar_noise_scale", f.lidar_noise_scale);
+  if (f.visual_noise_scale != 1.0) o.addNumber("visual_noise_scale", f.visual_noise_scale);
   if (!f.gated.empty()) {
     std::vector<std::string> gated;
     for (const GateEvent& g : f.gated)

@@ -196,18 +196,24 @@ FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInp
   camera_nodes_.push_back(node);
   std::optional<Candidate> lidar_candidate, visual_candidate;
   if (lidar) {
-    const std::optional<GateEvent> jump = lidar_gate_.check(t, lidar->T_odom_camera, lidar->information);
+    const std::optional<GateEvent> jump =
+        lidar_gate_.check(t, lidar->T_odom_camera, lidar->information, !visual.has_value());
+    LidarFrameInput weighed = *lidar;
+    weighed.information /= lidar_gate_.noiseScale();
     if (jump) out.gated.push_back(*jump);
-    else lidar_candidate = lidarFactor(node, *lidar, lidar_gate_.restarted());
+    else lidar_candidate = lidarFactor(node, weighed, lidar_gate_.restarted());
   }
   if (visual) {
     if (visual->map_id != visual_map_) visual_gate_.reset();
     visual_map_ = visual->map_id;
     if (visual->T_new_old) visual_gate_.moveHistory(*visual->T_new_old);
     const double s = config_.visual_pixel_sigma;
-    const std::optional<GateEvent> jump = visual_gate_.check(t, visual->T_map_camera, visual->information / (s * s));
+    const std::optional<GateEvent> jump =
+        visual_gate_.check(t, visual->T_map_camera, visual->information / (s * s), !lidar.has_value());
+    VisualFrameInput weighed = *visual;
+    weighed.information /= visual_gate_.noiseScale();
     if (jump) out.gated.push_back(*jump);
-    visual_candidate = visualFactor(node, t, *visual, !jump);
+    visual_candidate = visualFactor(node, t, weighed, !jump);
   }
   std::optional<Candidate> motion;
   if (camera_nodes_.size() >= 2) motion = motionFactor(node, t);
@@ -222,6 +228,8 @@ FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInp
   solveWindow(static_cast<int>(nodes_.size()) - 1);
   out.T_world_camera = nodes_[static_cast<std::size_t>(node)].T_world_camera;
   out.camera_node = node;
+  out.lidar_noise_scale = lidar_gate_.noiseScale();
+  out.visual_noise_scale = visual_gate_.noiseScale();
   out.lidar_used = lidar_candidate.has_value();
   out.visual_used = visual_candidate.has_value();
   if (visual_candidate)
@@ -236,7 +244,7 @@ void FusedEstimator::improveLidar(int camera_node, const LidarFrameInput& lidar)
     PoseFactor& factor = factors_[static_cast<std::size_t>(f)];
     if (factor.source != FactorSource::kLidar) continue;
     factor.T_from_to = lidar.T_odom_camera;
-    factor.information = lidar.information;
+    factor.information = lidar.information / lidar_gate_.noiseScale();
     if (last_lidar_ && last_lidar_->first == factor.from) last_lidar_->second = lidar;
   }
 }

@@ -70,6 +70,8 @@ struct VisualFrameInput {
 struct FusedFrameOutput {
   std::optional<Eigen::Isometry3d> T_world_camera;  // none before the first LiDAR pose
   int camera_node = -1;                             // the frame's node in the graph
+  // Each subsystem's covariance multiplier, from its own steps (step_gate.h).
+  double lidar_noise_scale = 1.0, visual_noise_scale = 1.0;
   bool lidar_used = false, visual_used = false;     // factors of this frame in the graph
   std::vector<GateEvent> gated;
   double visual_chi_square_per_dof = -1.0;  // of the accepted visual factor at the solution, -1: none

@@ -106,6 +106,8 @@ class FusedOnline final : public OnlineOutput {
     frame.fused = out.visual_used && out.lidar_used;
     frame.gated = out.gated;
     frame.visual_chi_square_per_dof = out.visual_chi_square_per_dof;
+    frame.lidar_noise_scale = out.lidar_noise_scale;
+    frame.visual_noise_scale = out.visual_noise_scale;
     return frame;
   }
   void lidarImproved(std::size_t index, const LidarFrameRecord& l) override {
