@@ -100,9 +100,11 @@ int runRun(RunArgs args) {
 
 void addRunCommand(CLI::App& app, CommandAction& action) {
   CLI::App* cmd = app.add_subcommand(
-      "run", "Run SLAM over a sequence folder or ROS1 bags; writes OUT/trajectory.tum, stats.json, map.ply and "
-             "lines.ply, and prints the accuracy when there is ground truth. Without --sequence or --bag it runs on "
-             "the built-in default, a simulated room sequence generated once into out/default-room.");
+      "run", "Run SLAM over a sequence folder or ROS1 bags; writes OUT/trajectory.tum (the online output, each "
+             "pose from the data up to its frame), trajectory_refined.tum (the offline refinement), stats.json, "
+             "map.ply and lines.ply, and prints the accuracy of both when there is ground truth. Without --sequence "
+             "or --bag it runs on the built-in default, a simulated room sequence generated once into "
+             "out/default-room.");
   auto args = std::make_shared<RunArgs>();
   auto* sequence = cmd->add_option("--sequence", args->input.sequence_dir, "Sequence folder (docs/sequence-format.md)");
   auto* bags = cmd->add_option("--bag", args->input.bag_files, "ROS1 bag files of one recording (needs --preset)");

@@ -85,6 +85,7 @@ TEST(SystemConfig, EstimatorKeysAreReadAndChecked) {
       "  lidar_drift_deg: 0.02\n"
       "  motion_accel: 3.0\n"
       "  motion_angular_accel_deg: 45.0\n"
+      "  gate_accept_after: 5\n"
       "  huber_delta: 2.0\n"
       "  max_iterations: 5\n");
   EXPECT_DOUBLE_EQ(c.estimator.window_s, 2.0);
@@ -93,6 +94,7 @@ TEST(SystemConfig, EstimatorKeysAreReadAndChecked) {
   EXPECT_DOUBLE_EQ(c.estimator.lidar_drift_deg, 0.02);
   EXPECT_DOUBLE_EQ(c.estimator.motion_accel, 3.0);
   EXPECT_DOUBLE_EQ(c.estimator.motion_angular_accel_deg, 45.0);
+  EXPECT_EQ(c.estimator.gate_accept_after, 5);
   EXPECT_DOUBLE_EQ(c.estimator.huber_delta, 2.0);
   EXPECT_EQ(c.estimator.max_iterations, 5);
   EXPECT_THROW(load("estimator:\n  visual_pixel_sigma: -1\n"), lvslam::Error);

@@ -30,9 +30,7 @@ FusedEstimator::FusedEstimator(const FusedEstimatorConfig& config)
 
 FusedEstimator::Candidate FusedEstimator::makeCandidate(PoseFactor factor) const {
   Candidate c;
-  const PseudoInverse inverse = pseudoInverse(factor.information);
-  c.covariance = inverse.inverse;
-  c.rank = inverse.rank;
+  c.rank = pseudoInverse(factor.information).rank;
   c.T_world_implied = nodes_[static_cast<std::size_t>(factor.from)].T_world_camera * factor.T_from_to;
   c.factor = std::move(factor);
   return c;
@@ -87,8 +85,7 @@ std::optional<FusedEstimator::Candidate> FusedEstimator::lidarFactor(int node, c
 // Where the frame's visual pose is measured from: the keyframe it was
 // tracked against, the map's first view, or (a frame that became a
 // keyframe, or whose keyframe never was a node) the map's previous frame.
-std::optional<int> FusedEstimator::visualFrom(double t, const VisualFrameInput& visual,
-                                              Eigen::Isometry3d& T_from_to) const {
+std::optional<int> FusedEstimator::visualFrom(const VisualFrameInput& visual, Eigen::Isometry3d& T_from_to) const {
   if (visual.initial_reference) {
     const auto& [keyframe, first_view] = *visual.initial_reference;
     const std::optional<int> from = nodeAtTime(times_, camera_nodes_, first_view.t);
@@ -105,19 +102,18 @@ std::optional<int> FusedEstimator::visualFrom(double t, const VisualFrameInput& 
   }
   const auto last = last_visual_.find(visual.map_id);
   if (last == last_visual_.end()) return std::nullopt;
-  (void)t;
   T_from_to = last->second.second.inverse() * visual.T_map_camera;
   return last->second.first;
 }
 
-std::optional<FusedEstimator::Candidate> FusedEstimator::visualFactor(int node, double t,
-                                                                      const VisualFrameInput& visual, bool use) {
+std::optional<FusedEstimator::Candidate> FusedEstimator::visualFactor(int node, const VisualFrameInput& visual,
+                                                                      bool use) {
   if (visual.T_new_old)  // the map moved under its earlier poses
     if (const auto last = last_visual_.find(visual.map_id); last != last_visual_.end())
       last->second.second = *visual.T_new_old * last->second.second;
   std::optional<Candidate> candidate;
   Eigen::Isometry3d T_from_to;
-  const std::optional<int> from = use ? visualFrom(t, visual, T_from_to) : std::nullopt;
+  const std::optional<int> from = use ? visualFrom(visual, T_from_to) : std::nullopt;
   if (from && *from != node) {
     // The tracker's information is for T_camera_map <- exp(d) T_camera_map,
     // i.e. T_map_camera <- T_map_camera exp(-d): the same quadratic form.
@@ -213,7 +209,7 @@ FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInp
     VisualFrameInput weighed = *visual;
     weighed.information /= visual_gate_.noiseScale();
     if (jump) out.gated.push_back(*jump);
-    visual_candidate = visualFactor(node, t, weighed, !jump);
+    visual_candidate = visualFactor(node, weighed, !jump);
   }
   std::optional<Candidate> motion;
   if (camera_nodes_.size() >= 2) motion = motionFactor(node, t);

@@ -38,7 +38,7 @@ struct FusedEstimatorConfig {
   double lidar_drift_m = 0.005;     // odometry error growth per sqrt(m) of path (random walk)
   double lidar_drift_deg = 0.03;
   double motion_accel = 2.0;           // m/s^2 (1 sigma): the platform's acceleration
-  double motion_angular_accel_deg = 360.0;  // deg/s^2 (a wheeled platform's vibration included)
+  double motion_angular_accel_deg = 90.0;  // deg/s^2
   int gate_accept_after = 3;  // gated steps in a row before a jump counts as a new start
   double huber_delta = 3.0;
   int max_iterations = 8;
@@ -100,16 +100,15 @@ class FusedEstimator {
   struct Candidate {
     PoseFactor factor;
     Eigen::Isometry3d T_world_implied;  // the new node's pose the factor implies
-    Matrix6d covariance;                // pseudo-inverse of its information
-    int rank = 0;
+    int rank = 0;                       // directions its information knows
   };
   int addNode(double t, const Eigen::Isometry3d& T, bool fixed);
   void accept(const PoseFactor& factor);
   std::optional<Candidate> lidarFactor(int node, const LidarFrameInput& lidar, bool new_start);
   // Registers the frame's keyframe role; the factor only when `use`.
-  std::optional<Candidate> visualFactor(int node, double t, const VisualFrameInput& visual, bool use);
+  std::optional<Candidate> visualFactor(int node, const VisualFrameInput& visual, bool use);
   Candidate motionFactor(int node, double t) const;
-  std::optional<int> visualFrom(double t, const VisualFrameInput& visual, Eigen::Isometry3d& T_from_to) const;
+  std::optional<int> visualFrom(const VisualFrameInput& visual, Eigen::Isometry3d& T_from_to) const;
   Candidate makeCandidate(PoseFactor factor) const;
   void solveWindow(int newest);
 
