@@ -78,12 +78,6 @@ SystemOutput assembled(PipelineRecords records, const SystemConfig& config, cons
                                          j < records.lidar.size() ? &records.lidar[j] : nullptr));
   records.switches = online->switches();
   records.T_world_map = online->mapPlacements();
-  if (const FusedEstimator* estimator = online->estimator()) {
-    records.graph_times = estimator->nodeTimes();
-    records.graph_camera_nodes = estimator->cameraNodes();
-    records.graph_nodes = estimator->nodes();
-    records.graph_factors = estimator->factors();
-  }
   return assembleOutput(records, config, T_camera_lidar);
 }
 
@@ -285,7 +279,6 @@ struct FusedScenario {
 // Healthy vision in map 0, a blackout, then a new map 1; the LiDAR is exact throughout.
 const Eigen::Isometry3d kTMap0World = expSE3((Vector6d() << 1, 2, 3, 0.1, 0.2, 0.3).finished());
 const Eigen::Isometry3d kTMap1World = expSE3((Vector6d() << -4, 0, 1, 0.5, -0.2, 0.0).finished());
-const Eigen::Isometry3d& mapWorld(int map_id) { return map_id == 0 ? kTMap0World : kTMap1World; }
 
 FusedScenario blackoutScenario(std::size_t frames) {
   FusedScenario s;

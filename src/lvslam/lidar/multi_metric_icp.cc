@@ -116,8 +116,13 @@ struct ScaledEigen {
   Eigen::SelfAdjointEigenSolver<Matrix6d> solver;
   double condition = 0.0;
   bool degenerate = false;
-  bool usable(int i) const { return !(solver.eigenvalues()(i) < ratio * solver.eigenvalues()(5)); }
   double ratio = 0.0;
+  bool usable(int i) const { return !(solver.eigenvalues()(i) < ratio * solver.eigenvalues()(5)); }
+  // Some direction carries information at all.
+  bool informative() const {
+    const double largest = solver.eigenvalues()(5);
+    return largest > 0 && std::isfinite(largest);
+  }
 };
 
 ScaledEigen scaledEigen(const Matrix6d& H_raw, double degeneracy_ratio) {
@@ -128,7 +133,7 @@ ScaledEigen scaledEigen(const Matrix6d& H_raw, double degeneracy_ratio) {
   const Vector6d lambda = e.solver.eigenvalues();
   const double largest = lambda(5);
   e.condition = largest > 0 ? lambda(0) / largest : 0.0;
-  e.degenerate = !(largest > 0) || !std::isfinite(largest);
+  e.degenerate = !e.informative();
   for (int i = 0; i < 6 && !e.degenerate; ++i) e.degenerate = !e.usable(i);
   return e;
 }
@@ -140,8 +145,7 @@ Vector6d solveWellConditioned(const NormalEquations& eq, double degeneracy_ratio
   const ScaledEigen e = scaledEigen(eq.H, degeneracy_ratio);
   degenerate = e.degenerate;
   condition = e.condition;
-  const double largest = e.solver.eigenvalues()(5);
-  if (!(largest > 0) || !std::isfinite(largest)) return Vector6d::Zero();
+  if (!e.informative()) return Vector6d::Zero();
   const Vector6d b = e.scale.asDiagonal() * eq.b;
   Vector6d x_scaled = Vector6d::Zero();
   for (int i = 0; i < 6; ++i) {
@@ -155,8 +159,7 @@ Vector6d solveWellConditioned(const NormalEquations& eq, double degeneracy_ratio
 Matrix6d wellConditionedInformation(const NormalEquations& eq, double degeneracy_ratio) {
   if (eq.count == 0 || !(eq.squared_error > 0)) return Matrix6d::Zero();
   const ScaledEigen e = scaledEigen(eq.H, degeneracy_ratio);
-  const double largest = e.solver.eigenvalues()(5);
-  if (!(largest > 0) || !std::isfinite(largest)) return Matrix6d::Zero();
+  if (!e.informative()) return Matrix6d::Zero();
   Matrix6d H_scaled = Matrix6d::Zero();
   for (int i = 0; i < 6; ++i) {
     if (!e.usable(i)) continue;
@@ -176,6 +179,7 @@ IcpResult registerMultiMetric(const std::vector<FeaturePoint>& source, const Loc
   result.T_world_lidar = T_world_lidar_guess;
   std::vector<const MapPoint*> matches;
   Eigen::Isometry3d T_associated = T_world_lidar_guess;
+  NormalEquations eq;  // of the last iteration: the pose's information comes from it
   for (int iteration = 0; iteration < config.max_iterations; ++iteration) {
     // Near convergence the nearest neighbours no longer change: keep them
     // while the pose moved less than reassociate_motion (LOAM-style).
@@ -183,12 +187,11 @@ IcpResult registerMultiMetric(const std::vector<FeaturePoint>& source, const Loc
       associateAll(source, map, result.T_world_lidar, threshold, config, matches);
       T_associated = result.T_world_lidar;
     }
-    const NormalEquations eq = buildNormalEquations(source, matches, result.T_world_lidar, threshold, config);
-    result.information = wellConditionedInformation(eq, config.degeneracy_ratio);
+    eq = buildNormalEquations(source, matches, result.T_world_lidar, threshold, config);
     result.iterations = iteration + 1;
     result.correspondences = eq.count;
     result.rms_residual = eq.count > 0 ? std::sqrt(eq.squared_error / eq.count) : 0.0;
-    if (eq.count < config.min_correspondences) return result;
+    if (eq.count < config.min_correspondences) break;
     const Vector6d dx = solveWellConditioned(eq, config.degeneracy_ratio, result.degenerate, result.condition);
     result.T_world_lidar = result.T_world_lidar * expSE3(dx);
     if (dx.head<3>().norm() < config.converged_translation && dx.tail<3>().norm() < config.converged_rotation) {
@@ -196,6 +199,7 @@ IcpResult registerMultiMetric(const std::vector<FeaturePoint>& source, const Loc
       break;
     }
   }
+  result.information = wellConditionedInformation(eq, config.degeneracy_ratio);
   return result;
 }
 

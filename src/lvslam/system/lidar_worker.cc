@@ -89,9 +89,8 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable) {
     if (t <= last.t + sweep && sweep > 0.0) {
       pose(index, odometry_.poseAt(t));
       frames_provisional_.push_back(index);
-    } else if (extrapolate) {
+    } else if (extrapolate) {  // only at the end, where `reliable` is false
       pose(index, odometry_.poseAt(t));
-      frames_[index].pose_reliable = false;
     } else {
       still_waiting.push_back(index);
     }

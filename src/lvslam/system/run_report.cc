@@ -10,6 +10,7 @@
 #include "lvslam/core/error.h"
 #include "lvslam/eval/eval_report.h"
 #include "lvslam/eval/json_writer.h"
+#include "lvslam/fusion/line_accuracy.h"
 #include "lvslam/io/tum.h"
 
 namespace lvslam::system {
@@ -149,14 +150,6 @@ double lostFraction(const PipelineRecords& records, const SystemOutput& output, 
   return share(missing, records.images);
 }
 
-// Value at quantile q of the (unsorted) values; 0 when there are none.
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
-  return values[k];
-}
-
 // Mean of the frames' visual consistency over [begin, end), -1 without any.
 double meanConsistency(const std::vector<FrameOutput>& frames, std::size_t begin, std::size_t end) {
   double sum = 0.0;
@@ -175,8 +168,8 @@ void addOnlineFigures(const std::vector<FrameOutput>& frames, RunSummary& s) {
     latencies.push_back(f.latency_ms);
     for (const GateEvent& g : f.gated) (g.source == FactorSource::kLidar ? s.gated_lidar : s.gated_visual) += 1;
   }
-  s.latency_median_ms = quantile(latencies, 0.5);
-  s.latency_p95_ms = quantile(latencies, 0.95);
+  s.latency_median_ms = fusion::quantile(latencies, 0.5);
+  s.latency_p95_ms = fusion::quantile(latencies, 0.95);
   s.latency_max_ms = latencies.empty() ? 0.0 : *std::max_element(latencies.begin(), latencies.end());
   s.visual_consistency_first = meanConsistency(frames, 0, frames.size() / 3);
   s.visual_consistency_last = meanConsistency(frames, frames.size() - frames.size() / 3, frames.size());

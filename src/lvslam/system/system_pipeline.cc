@@ -201,12 +201,6 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool final_map_rel
   records.online = stage.takeFrames();
   records.switches = stage.output().switches();
   records.T_world_map = stage.output().mapPlacements();
-  if (const FusedEstimator* estimator = stage.output().estimator()) {
-    records.graph_times = estimator->nodeTimes();
-    records.graph_camera_nodes = estimator->cameraNodes();
-    records.graph_nodes = estimator->nodes();
-    records.graph_factors = estimator->factors();
-  }
   if (workers.lidar) {
     records.lidar = workers.lidar->frames();
     records.scans = workers.lidar->scans();
@@ -335,7 +329,7 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
         // A scan's time stamp is its first point's: the sweep before it ends then.
         paceTo(scan->timestamp);
         if (workers.lidar) ok = toLidar(SweepEndJob{});
-        paceTo(deliveryTime(*data));
+        if (config.realtime) paceTo(deliveryTime(*data));
         noteTime(records, records.images + scans, scan->timestamp);
         ++scans;
         const ScanPtr shared = std::make_shared<const LidarScan>(std::move(*scan));

@@ -33,16 +33,11 @@ struct PipelineRecords {
   std::vector<PlyPoint> lidar_map;        // odometry world frame
   std::vector<MapLine> visual_lines;      // the lines of every visual map, old and current
   // The online output, one per camera frame, each made when its data were in
-  // (online/online_output.h), with the detection module's switches, where
-  // each visual map sat in the output world, and (fused mode) the
-  // estimator's graph for the offline refinement.
+  // (online/online_output.h), with the detection module's switches and where
+  // each visual map sat in the output world.
   std::vector<FrameOutput> online;
   std::vector<SwitchEvent> switches;
   std::map<int, Eigen::Isometry3d> T_world_map;
-  std::vector<double> graph_times;
-  std::vector<int> graph_camera_nodes;
-  std::vector<PoseNode> graph_nodes;
-  std::vector<PoseFactor> graph_factors;
   std::size_t images = 0, scans_read = 0;  // as read from the source
   double first_time = 0.0, last_time = 0.0;  // of the sensor data
 };
