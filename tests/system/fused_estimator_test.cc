@@ -131,6 +131,31 @@ TEST(FusedEstimator, ADegenerateLidarDirectionTakesTheVisualEstimate) {
   EXPECT_NEAR(last.T_world_camera->translation().y(), 0.0, 0.002);
 }
 
+// The LiDAR lost x for frames 10..29 (its odometry dead-reckoned 20 % slow:
+// 20 cm short by frame 29), then sees x again from frame 30 on, with the
+// right motion but from the dead-reckoned position. Its odometry frame
+// slipped along x while it was blind, so only its motion from frame 30 on
+// enters: the output stays on vision's (true) position instead of being
+// pulled back toward the LiDAR's.
+TEST(FusedEstimator, ADirectionTheLidarSeesAgainBringsItsMotionNotItsDeadReckonedPosition) {
+  FusedEstimator estimator(FusedEstimatorConfig{});
+  const Matrix6d H_full = isotropic(0.002, 0.0005), H_visual = isotropic(0.004, 0.001);
+  Matrix6d H_blind_x = H_full;
+  H_blind_x(0, 0) = 0.0;
+  double lidar_x = 0.0;
+  for (int j = 0; j < 40; ++j) {
+    const double x = 0.05 * j;
+    if (j > 0) lidar_x += (j >= 10 && j < 30) ? 0.04 : 0.05;
+    const bool blind = j >= 10 && j < 30;
+    const FusedFrameOutput out =
+        estimator.add(kDt * j, lidarAt(at(lidar_x), blind ? H_blind_x : H_full), visualAt(at(x), H_visual, j));
+    ASSERT_TRUE(out.T_world_camera);
+    EXPECT_TRUE(out.gated.empty()) << j;
+    EXPECT_TRUE(out.lidar_used) << j;
+    EXPECT_NEAR(out.T_world_camera->translation().x(), x, 0.01) << j;
+  }
+}
+
 // Vision alone (no LiDAR pose for a while: a drop-out) carries the output.
 TEST(FusedEstimator, ALidarDropOutIsBridgedByVision) {
   FusedEstimator estimator(FusedEstimatorConfig{});

@@ -48,11 +48,14 @@ void FusedEstimator::accept(const PoseFactor& factor) {
   factors_.push_back(factor);
 }
 
-// The odometry's camera pose, seen through a new odometry-frame node: that
-// node follows the last one within the drift over the path between (a
-// random walk about the camera, carried to the odometry frame's origin by
-// the adjoint), and the camera follows the node within the ICP's own
-// covariance (Censi 2007: J^T J / sigma^2 at the optimum).
+// The odometry's camera pose, seen through a new odometry-frame node: the
+// camera follows the node within the ICP's own covariance (Censi 2007:
+// J^T J / sigma^2 at the optimum), and the node follows the last one within
+// the drift over the path between (a random walk about the camera). Along a
+// direction the registration could not see (Zhang et al. 2016: the ICP keeps
+// the prediction there) the odometry dead-reckons, so its frame slips freely
+// along it: where the ICP sees that direction again, only the motion from
+// there on is trusted, not the position it dead-reckoned to.
 std::optional<FusedEstimator::Candidate> FusedEstimator::lidarFactor(int node, const LidarFrameInput& lidar,
                                                                      bool new_start) {
   const double t = times_[static_cast<std::size_t>(node)];
@@ -63,22 +66,20 @@ std::optional<FusedEstimator::Candidate> FusedEstimator::lidarFactor(int node, c
   }
   const int previous_odom = last_lidar_->first;
   const LidarFrameInput previous = last_lidar_->second;
-  const double path = (previous.T_odom_camera.inverse() * lidar.T_odom_camera).translation().norm();
-  const Matrix6d drift = isotropicCovariance(config_.lidar_drift_m * std::sqrt(path),
-                                             config_.lidar_drift_deg * kDegToRad * std::sqrt(path));
-  const Matrix6d Ad = adjointSE3(lidar.T_odom_camera);
-  const Matrix6d drift_at_origin = Ad * drift * Ad.transpose();
   const int odom = addNode(t, nodes_[static_cast<std::size_t>(previous_odom)].T_world_camera, false);
   last_lidar_ = std::make_pair(odom, lidar);
-  const PseudoInverse inverse = pseudoInverse(drift_at_origin);
-  if (new_start) {
-    // The odometry jumped and stayed: its frame takes the jump, the output does not.
-  } else if (inverse.rank == 6) {
-    accept({previous_odom, odom, Eigen::Isometry3d::Identity(), inverse.inverse, FactorSource::kLidar});
-  } else {  // no path: the odometry frame did not move
-    accept({previous_odom, odom, Eigen::Isometry3d::Identity(), Matrix6d::Identity() * 1e12, FactorSource::kLidar});
+  const PseudoInverse seen = pseudoInverse(lidar.information);
+  if (seen.rank == 0) return std::nullopt;
+  if (!new_start) {  // a new start: the odometry jumped and stayed; its frame takes the jump, the output does not
+    // No drift (no path, or drift off) leaves a floor: the odometry frame held, the information finite.
+    constexpr double kRigid = 1e-6;
+    const double root_path = std::sqrt((previous.T_odom_camera.inverse() * lidar.T_odom_camera).translation().norm());
+    const Matrix6d drift = isotropicCovariance(std::max(kRigid, config_.lidar_drift_m * root_path),
+                                               std::max(kRigid, config_.lidar_drift_deg * kDegToRad * root_path));
+    const Matrix6d Ad_inverse = adjointSE3(lidar.T_odom_camera.inverse());
+    accept({previous_odom, odom, Eigen::Isometry3d::Identity(),
+            Ad_inverse.transpose() * informationOn(seen.range, drift) * Ad_inverse, FactorSource::kLidar});
   }
-  if (pseudoInverse(lidar.information).rank == 0) return std::nullopt;
   return makeCandidate({odom, node, lidar.T_odom_camera, lidar.information, FactorSource::kLidar});
 }
 
