@@ -18,11 +18,12 @@ struct SimulateArgs {
   std::string out_dir;
   std::string extrinsic_error;
   std::string camera_blackout;
+  std::string lidar_dropout;
   bool blur = false;
 };
 
 // A family preset with the duration and seed given beside it (and the
-// extrinsic error and blackout, applied after).
+// extrinsic error, blackout and drop-out, applied after).
 sim::SimOptions familyWith(const SimulateArgs& args, const CLI::App& cmd) {
   for (const char* other : {"--scenario", "--night", "--blur", "--distortion", "--person", "--people", "--lidar",
                             "--beam-footprint", "--auto-exposure", "--rolling-shutter", "--speed-scale",
@@ -39,6 +40,8 @@ int runSimulate(SimulateArgs args, const CLI::App& cmd) {
   if (!args.extrinsic_error.empty()) args.options.extrinsic_error = sim::parseExtrinsicError(args.extrinsic_error);
   if (!args.camera_blackout.empty())
     args.options.camera_blackout = sim::parseTimeInterval(args.camera_blackout, "--camera-blackout");
+  if (!args.lidar_dropout.empty())
+    args.options.lidar_dropout = sim::parseTimeInterval(args.lidar_dropout, "--lidar-dropout");
   if (args.blur) args.options.blur = true;
   const sim::SimulationSummary summary = sim::simulateSequence(args.options, args.out_dir);
   std::cout << "wrote " << args.out_dir << ": " << summary.images << " images, " << summary.scans << " scans, "
@@ -82,6 +85,8 @@ void addSimulateCommand(CLI::App& app, CommandAction& action) {
                   "(the truth goes into extrinsics_truth.yaml)");
   cmd->add_option("--camera-blackout", args->camera_blackout,
                   "T0,T1: black images between these seconds from the sequence start");
+  cmd->add_option("--lidar-dropout", args->lidar_dropout,
+                  "T0,T1: no LiDAR sweep that starts between these seconds from the sequence start");
   cmd->callback([&action, args, cmd] { action = [args, cmd] { return runSimulate(*args, *cmd); }; });
 }
 

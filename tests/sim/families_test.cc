@@ -53,10 +53,10 @@ TEST_P(Families, GenerateDeterministically) {
 INSTANTIATE_TEST_SUITE_P(All, Families, ::testing::ValuesIn(familyNames()));
 
 TEST(FamilyOptions, ListsEveryFamilyOfTheIssueAndNamesBadOnes) {
-  for (const char* name : {"corridor", "hall16", "glass", "yard", "crowd", "night", "blur", "plain", "blackout", "room",
-                           "gate"})
+  for (const char* name : {"corridor", "hall16", "glass", "yard", "crowd", "dropout", "night", "blur", "plain",
+                           "blackout", "room", "gate"})
     EXPECT_NO_THROW(validate(familyOptions(name))) << name;
-  EXPECT_EQ(familyNames().size(), 11u);
+  EXPECT_EQ(familyNames().size(), 12u);
   EXPECT_NE(errorMessageOf([] { familyOptions("kitchen"); }).find("--family"), std::string::npos);
   // The distortion is on by default in at least one family; room and gate are the scenarios as they were.
   EXPECT_TRUE(familyOptions("yard").distortion);
@@ -66,6 +66,7 @@ TEST(FamilyOptions, ListsEveryFamilyOfTheIssueAndNamesBadOnes) {
   EXPECT_FALSE(room.beam_footprint || room.auto_exposure || room.rolling_shutter || room.people > 0);
   EXPECT_EQ(familyOptions("blackout").camera_blackout->end - familyOptions("blackout").camera_blackout->begin, 6.0);
   EXPECT_EQ(familyOptions("crowd").people, 12);
+  EXPECT_EQ(familyOptions("dropout").lidar_dropout->end - familyOptions("dropout").lidar_dropout->begin, 2.0);
 }
 
 }  // namespace

@@ -114,6 +114,21 @@ TEST(SimulatedFolder, BlackoutImagesAreAllZero) {
   EXPECT_EQ(black, 2);
 }
 
+TEST(SimulatedFolder, ALidarDropOutWritesNoSweepStartingInIt) {
+  testing::TempDir dir;
+  SimOptions options = shortRoom(1);
+  options.duration = 0.6;
+  options.lidar_dropout = TimeInterval{0.12, 0.32};
+  const SimulationSummary summary = simulateSequence(options, dir.path().string());
+  const SequenceReader reader(dir.path().string());
+  ASSERT_EQ(reader.lidarFiles().size(), static_cast<std::size_t>(summary.scans));
+  EXPECT_EQ(summary.scans, 3);  // sweeps start at 0.05 s and every 0.1 s after; those at 0.15 and 0.25 s are missing
+  for (const auto& file : reader.lidarFiles()) {
+    const double t = file.t - options.start_time;
+    EXPECT_FALSE(t >= 0.12 && t <= 0.32) << t;
+  }
+}
+
 Eigen::Isometry3d matrixFrom(const YAML::Node& node) {
   Eigen::Matrix4d M;
   for (int i = 0; i < 16; ++i) M(i / 4, i % 4) = node[i].as<double>();

@@ -28,6 +28,7 @@ std::vector<FamilyInfo> families() {
       {"glass", WeakerSensor::kLidar, "atrium walled by glass: no LiDAR returns from most walls"},
       {"yard", WeakerSensor::kLidar, "open paved yard: little within LiDAR range besides the ground"},
       {"crowd", WeakerSensor::kLidar, "the hall with 12 people walking: moving returns at LiDAR height"},
+      {"dropout", WeakerSensor::kLidar, "the room with the LiDAR silent for 2 s (from 10 s)"},
       {"night", WeakerSensor::kCamera, "the gate at night: dark, noisy, long-exposure images"},
       {"blur", WeakerSensor::kCamera, "the hall at 1.6x speed, 2.5x exposure, rolling shutter: blurred images"},
       {"plain", WeakerSensor::kCamera, "office of white walls and plain furniture: few corners"},
@@ -85,6 +86,11 @@ SimOptions familyOptions(const std::string& name) {
     SimOptions o = realistic(name, "room");
     o.auto_exposure = false;  // the frames are black, not dark
     o.camera_blackout = TimeInterval{24.0, 30.0};
+    return o;
+  }
+  if (name == "dropout") {
+    SimOptions o = realistic(name, "room");
+    o.lidar_dropout = TimeInterval{10.0, 12.0};
     return o;
   }
   if (name == "room" || name == "gate") {

@@ -47,10 +47,13 @@ void validate(const SimOptions& options) {
         e->rotation_deg > 180.0 || e->translation_m < 0.0)
       throw Error("--extrinsic-error", "DEG must be in [0, 180] and M non-negative");
   }
-  if (const auto& b = options.camera_blackout) {
-    if (!std::isfinite(b->begin) || !std::isfinite(b->end) || b->begin < 0.0 || b->end < b->begin)
-      throw Error("--camera-blackout", "expected 0 <= T0 <= T1 (seconds from the sequence start)");
-  }
+  const auto checkInterval = [](const std::optional<TimeInterval>& interval, const char* option) {
+    if (interval && (!std::isfinite(interval->begin) || !std::isfinite(interval->end) || interval->begin < 0.0 ||
+                     interval->end < interval->begin))
+      throw Error(option, "expected 0 <= T0 <= T1 (seconds from the sequence start)");
+  };
+  checkInterval(options.camera_blackout, "--camera-blackout");
+  checkInterval(options.lidar_dropout, "--lidar-dropout");
   if (!std::isfinite(options.start_time) || options.start_time < 0.0)
     throw Error("start_time", "must be a non-negative number of seconds");
 }

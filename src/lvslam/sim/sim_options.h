@@ -38,6 +38,7 @@ struct SimOptions {
   double exposure_scale = 1.0;    // multiplies the scene's exposure time (longer: more motion blur)
   std::optional<ExtrinsicError> extrinsic_error;
   std::optional<TimeInterval> camera_blackout;
+  std::optional<TimeInterval> lidar_dropout;  // no sweep that starts in it is written
   double start_time = 1700000000.0;  // Unix-like epoch of the sequence start
 };
 

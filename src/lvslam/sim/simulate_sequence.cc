@@ -77,8 +77,8 @@ std::vector<double> groundTruthTimes(double duration, std::vector<double> sensor
   return sensor_times;
 }
 
-bool inBlackout(const SimOptions& options, double t) {
-  return options.camera_blackout && t >= options.camera_blackout->begin && t <= options.camera_blackout->end;
+bool within(const std::optional<TimeInterval>& interval, double t) {
+  return interval && t >= interval->begin && t <= interval->end;
 }
 
 }  // namespace
@@ -131,20 +131,22 @@ SimulationSummary simulateSequence(const SimOptions& options, const std::string&
     if (!image_left && !scan_left) break;
     if (image_left && (!scan_left || t_image <= t_scan + sweep)) {
       cv::Mat image = renderer.renderImage(t_image, exposure.current());
-      if (inBlackout(options, t_image)) image.setTo(0);
+      if (within(options.camera_blackout, t_image)) image.setTo(0);
       exposure.update(image);  // the next frame's exposure, from what this one shows
       writer.writeImage(options.start_time + t_image, image);
       sensor_times.push_back(t_image);
       ++k;
     } else {
-      LidarScan scan = lidar.scanLidar(t_scan);
-      scan.timestamp += options.start_time;
-      writer.writeScan(scan);
-      sensor_times.push_back(t_scan);
+      if (!within(options.lidar_dropout, t_scan)) {
+        LidarScan scan = lidar.scanLidar(t_scan);
+        scan.timestamp += options.start_time;
+        writer.writeScan(scan);
+        sensor_times.push_back(t_scan);
+        ++summary.scans;
+      }
       ++j;
     }
     summary.images = k;
-    summary.scans = j;
   }
   Trajectory groundtruth;
   for (const double t : groundTruthTimes(options.duration, sensor_times))

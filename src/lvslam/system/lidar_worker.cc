@@ -64,10 +64,10 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable) {
   if (scan_trajectory_.empty()) return;
   const StampedPose& last = scan_trajectory_.back();
   const double sweep = scan_trajectory_.size() >= 2 ? last.t - scan_trajectory_[scan_trajectory_.size() - 2].t : 0.0;
-  const auto pose = [&](std::size_t index, const Eigen::Isometry3d& T_odom_lidar) {
+  const auto pose = [&](std::size_t index, const Eigen::Isometry3d& T_odom_lidar, bool measured = true) {
     LidarFrameRecord& frame = frames_[index];
     frame.T_odom_lidar = T_odom_lidar;
-    frame.pose_reliable = reliable;
+    frame.pose_reliable = reliable && measured;
     frame.information = last_information_;
     if (on_frame_posed_) on_frame_posed_(index, frame);
   };
@@ -86,7 +86,14 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable) {
   std::vector<std::size_t> still_waiting;
   for (const std::size_t index : frames_waiting_) {
     const double t = frames_[index].t;
-    if (t <= last.t + sweep && sweep > 0.0) {
+    if (scan_trajectory_.size() >= 3 && t < last.t) {
+      // No registered sweep covers the frame (a drop-out, or a sweep the
+      // odometry rejected; the first sweep, whose length was unknown, posed
+      // nothing): the pose between the sweeps around the gap is a guess for
+      // the LiDAR's own output, not a measurement for the estimator.
+      const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
+      pose(index, interpolateAtTime(t, before.t, before.T_world_frame, last.t, last.T_world_frame), false);
+    } else if (t <= last.t + sweep && sweep > 0.0) {
       pose(index, odometry_.poseAt(t));
       frames_provisional_.push_back(index);
     } else if (extrapolate) {  // only at the end, where `reliable` is false
