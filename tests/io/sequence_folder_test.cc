@@ -9,6 +9,7 @@
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
 #include "lvslam/io/scan_file.h"
+#include "lvslam/io/sequence_info.h"
 #include "lvslam/io/sequence_reader.h"
 #include "lvslam/io/sequence_writer.h"
 #include "support/temp_dir.h"
@@ -92,6 +93,32 @@ TEST(SequenceFolder, WriteReadRoundTripMergesSensorsInTimeOrder) {
   const std::vector<std::pair<double, bool>> expected{{100.0, true}, {100.05, false}, {100.1, true}, {100.1, false}};
   EXPECT_EQ(order, expected);
   EXPECT_EQ(reader.groundTruth().size(), 2u);
+}
+
+// sequence.yaml goes through yaml-cpp's emitter: any name reads back as
+// written (quotes, backslashes, a YAML comment sign, unicode, a newline) and
+// every double exactly (the extrinsic to rounding: the reader re-orthonormalises it).
+TEST(SequenceFolder, SequenceYamlReadsBackExactlyWhateverTheName) {
+  for (const std::string name : {std::string("quote\"name"), std::string("seq\\1"), std::string("a: b # c"),
+                                 std::string("caf\u00e9 \u2192 \u00fcber"), std::string("two\nlines"),
+                                 std::string("")}) {
+    TempDir dir;
+    SequenceInfo info = makeInfo({"x", "y", "z", "intensity", "time", "ring"}, TimeReference::kEnd);
+    info.name = name;
+    info.camera->rate_hz = 1.0 / 3.0;
+    info.groundtruth_frame = GroundTruthFrame::kLidar;
+    const std::string path = dir.file("sequence.yaml");
+    writeSequenceInfo(path, info);
+    const SequenceInfo back = readSequenceInfo(path);
+    EXPECT_EQ(back.name, name);
+    EXPECT_EQ(back.camera->rate_hz, 1.0 / 3.0);
+    EXPECT_EQ(back.camera->camera.cx(), 31.5);
+    EXPECT_EQ(back.camera->camera.distortion().k2, -0.02);
+    EXPECT_EQ(back.lidar->point_fields, info.lidar->point_fields);
+    EXPECT_EQ(back.lidar->time_reference, TimeReference::kEnd);
+    EXPECT_EQ(*back.groundtruth_frame, GroundTruthFrame::kLidar);
+    EXPECT_TRUE(back.T_camera_lidar.isApprox(info.T_camera_lidar, 1e-14)) << name;  // the reader re-orthonormalises R
+  }
 }
 
 TEST(SequenceFolder, KittiStyleFourFieldScansWithEndReference) {

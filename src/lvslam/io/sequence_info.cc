@@ -1,10 +1,12 @@
 #include "lvslam/io/sequence_info.h"
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <set>
 
 #include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
@@ -110,41 +112,64 @@ SequenceInfo readSequenceInfo(const std::string& yaml_path) {
   return info;
 }
 
+// Through yaml-cpp's emitter, so that any name (quotes, backslashes,
+// unicode) reads back as written; doubles with 17 digits read back exactly.
 void writeSequenceInfo(const std::string& yaml_path, const SequenceInfo& info) {
-  std::ofstream out(yaml_path);
-  if (!out) throw Error(yaml_path, "cannot write file");
-  out << "format: " << kSequenceFormat << "\n";
-  out << "name: \"" << info.name << "\"\n";
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  out << YAML::BeginMap;
+  out << YAML::Key << "format" << YAML::Value << std::string(kSequenceFormat);
+  out << YAML::Key << "name" << YAML::Value << YAML::DoubleQuoted << info.name;
+  const auto flowList = [&out](const auto& values) {
+    out << YAML::Flow << YAML::BeginSeq;
+    for (const auto& v : values) out << v;
+    out << YAML::EndSeq;
+  };
   if (info.camera) {
     const PinholeCamera& c = info.camera->camera;
-    out << "camera:\n  model: pinhole\n";
-    out << fmt::format("  width: {}\n  height: {}\n", c.width(), c.height());
-    out << fmt::format("  intrinsics: [{:.17g}, {:.17g}, {:.17g}, {:.17g}]\n", c.fx(), c.fy(), c.cx(), c.cy());
+    out << YAML::Key << "camera" << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "model" << YAML::Value << "pinhole";
+    out << YAML::Key << "width" << YAML::Value << c.width();
+    out << YAML::Key << "height" << YAML::Value << c.height();
+    out << YAML::Key << "intrinsics" << YAML::Value;
+    flowList(std::array<double, 4>{c.fx(), c.fy(), c.cx(), c.cy()});
     if (c.isDistorted()) {
       const RadTanDistortion& d = c.distortion();
-      out << fmt::format("  distortion:\n    model: radtan\n    coeffs: [{:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g}]\n",
-                         d.k1, d.k2, d.p1, d.p2, d.k3);
+      out << YAML::Key << "distortion" << YAML::Value << YAML::BeginMap;
+      out << YAML::Key << "model" << YAML::Value << "radtan";
+      out << YAML::Key << "coeffs" << YAML::Value;
+      flowList(std::array<double, 5>{d.k1, d.k2, d.p1, d.p2, d.k3});
+      out << YAML::EndMap;
     }
-    if (info.camera->rate_hz > 0.0) out << fmt::format("  rate_hz: {:.17g}\n", info.camera->rate_hz);
+    if (info.camera->rate_hz > 0.0) out << YAML::Key << "rate_hz" << YAML::Value << info.camera->rate_hz;
+    out << YAML::EndMap;
   }
   if (info.lidar) {
     const LidarInfo& l = *info.lidar;
-    out << "lidar:\n";
-    if (l.rings > 0) out << fmt::format("  rings: {}\n", l.rings);
-    if (l.rate_hz > 0.0) out << fmt::format("  rate_hz: {:.17g}\n", l.rate_hz);
-    out << fmt::format("  point_fields: [{}]\n", fmt::join(l.point_fields, ", "));
-    out << "  time_reference: " << (l.time_reference == TimeReference::kStart ? "start" : "end") << "\n";
+    out << YAML::Key << "lidar" << YAML::Value << YAML::BeginMap;
+    if (l.rings > 0) out << YAML::Key << "rings" << YAML::Value << l.rings;
+    if (l.rate_hz > 0.0) out << YAML::Key << "rate_hz" << YAML::Value << l.rate_hz;
+    out << YAML::Key << "point_fields" << YAML::Value;
+    flowList(l.point_fields);
+    out << YAML::Key << "time_reference" << YAML::Value
+        << (l.time_reference == TimeReference::kStart ? "start" : "end");
+    out << YAML::EndMap;
   }
   const Eigen::Matrix4d M = info.T_camera_lidar.matrix();
-  out << "extrinsics:\n  T_camera_lidar: [";
-  for (int r = 0; r < 4; ++r)
-    out << fmt::format("{}{:.17g}, {:.17g}, {:.17g}, {:.17g}", r == 0 ? "" : ",\n                   ", M(r, 0),
-                       M(r, 1), M(r, 2), M(r, 3));
-  out << "]\n";
+  std::array<double, 16> row_major{};
+  for (int i = 0; i < 16; ++i) row_major[static_cast<std::size_t>(i)] = M(i / 4, i % 4);
+  out << YAML::Key << "extrinsics" << YAML::Value << YAML::BeginMap << YAML::Key << "T_camera_lidar" << YAML::Value;
+  flowList(row_major);
+  out << YAML::EndMap;
   if (info.groundtruth_frame)
-    out << "groundtruth:\n  frame: " << (*info.groundtruth_frame == GroundTruthFrame::kCamera ? "camera" : "lidar")
-        << "\n";
-  if (!out) throw Error(yaml_path, "write failed");
+    out << YAML::Key << "groundtruth" << YAML::Value << YAML::BeginMap << YAML::Key << "frame" << YAML::Value
+        << (*info.groundtruth_frame == GroundTruthFrame::kCamera ? "camera" : "lidar") << YAML::EndMap;
+  out << YAML::EndMap;
+  if (!out.good()) throw Error(yaml_path, "cannot emit YAML: " + out.GetLastError());
+  std::ofstream file(yaml_path);
+  if (!file) throw Error(yaml_path, "cannot write file");
+  file << out.c_str() << "\n";
+  if (!file) throw Error(yaml_path, "write failed");
 }
 
 }  // namespace lvslam

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
@@ -27,23 +28,23 @@ Eigen::Vector3d randomUnitVector(CounterRandom& rng) {
   return v.normalized();
 }
 
-std::string matrixList(const Eigen::Isometry3d& T) {
-  const Eigen::Matrix4d M = T.matrix();
-  std::string text;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) text += fmt::format("{}{:.17g}", r + c == 0 ? "" : ", ", M(r, c));
-  return "[" + text + "]";
-}
-
 void writeExtrinsicsTruth(const std::string& path, const Eigen::Isometry3d& truth, const SimOptions& options) {
-  std::ofstream out(path);
-  out << "# True camera-LiDAR extrinsics of this simulated sequence; sequence.yaml holds\n"
-         "# a perturbed copy when the simulation was asked for an extrinsic error.\n";
-  out << "T_camera_lidar: " << matrixList(truth) << "\n";
   const ExtrinsicError e = options.extrinsic_error.value_or(ExtrinsicError{});
-  out << fmt::format("perturbation:\n  rotation_deg: {:.17g}\n  translation_m: {:.17g}\n", e.rotation_deg,
-                     e.translation_m);
-  if (!out) throw Error(path, "cannot write file");
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  out << YAML::Comment("True camera-LiDAR extrinsics of this simulated sequence; sequence.yaml holds a perturbed copy "
+                       "when the simulation was asked for an extrinsic error.");
+  out << YAML::BeginMap << YAML::Key << "T_camera_lidar" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+  const Eigen::Matrix4d M = truth.matrix();
+  for (int i = 0; i < 16; ++i) out << M(i / 4, i % 4);
+  out << YAML::EndSeq;
+  out << YAML::Key << "perturbation" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "rotation_deg" << YAML::Value << e.rotation_deg;
+  out << YAML::Key << "translation_m" << YAML::Value << e.translation_m;
+  out << YAML::EndMap << YAML::EndMap;
+  std::ofstream file(path);
+  file << out.c_str() << "\n";
+  if (!file) throw Error(path, "cannot write file");
 }
 
 SequenceInfo makeInfo(const Scenario& scenario, const Eigen::Isometry3d& T_camera_lidar) {
