@@ -87,13 +87,15 @@ async function openReport(browser, file, expectedCanvases) {
   const network = [];
   page.on('request', (r) => { if (!/^(file|blob|data):/.test(r.url())) network.push(r.url()); });
   await page.goto('file://' + path.resolve(work, file), { waitUntil: 'load' });
-  await page.evaluate(() => window.lvslamReport.ready);
+  const drawn = await page.evaluate(() => window.lvslamReport.ready.then(() => 'drawn', (e) => String(e)));
+  check(drawn === 'drawn', `${file}: the page draws (${drawn})`);
   check(errors.length === 0, `${file}: no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
   check(network.length === 0, `${file}: no network requests${network.length ? ': ' + network.join(' ') : ''}`);
   const canvases = await colouredPixels(page);
   for (const id of expectedCanvases) check(canvases.some((c) => c.id === id), `${file}: has canvas ${id}`);
   for (const c of canvases) check(c.coloured > 50, `${file}: ${c.id} (${c.width}x${c.height}) draws coloured pixels (${c.coloured})`);
-  const plot = await trajectoryPlot(page);
+  const plot = await trajectoryPlot(page).catch(() => ({ axes: [] }));
+  check(plot.axes.length === 2, `${file}: has a trajectory plot with two axes`);
   const gt = readTum(path.join(work, 'run', 'groundtruth.tum'));
   plot.axes.forEach((name, k) => {
     const column = 1 + 'xyz'.indexOf(name);
@@ -116,8 +118,10 @@ async function openReport(browser, file, expectedCanvases) {
 
 const browser = await puppeteer.launch({
   executablePath: chromium, headless: true,
-  // No GPU on a VM: WebGL through SwiftShader, Chromium's software renderer.
-  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-sandbox'],
+  // No GPU on a VM: WebGL through SwiftShader, Chromium's software renderer;
+  // the plots' 2D canvases on the CPU (through SwiftShader they take seconds).
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-sandbox',
+    '--disable-accelerated-2d-canvas'],
 });
 try {
   await openReport(browser, 'run/report.html', ['traj-top', 'traj-side', 'err-ate', 'det-source', 'det-tracking',

@@ -6,13 +6,13 @@ function benchFigure(cell) {
   return cell.ate_rmse_m ?? cell.ate_mean_m ?? null;
 }
 
-function benchCellText(cell, max) {
+function benchCellText(cell, max, colour) {
   if (!cell) return el('td', { text: '' });
   if (cell.failure) return el('td', { text: 'fail', title: cell.failure });
   if (cell.lost_fraction > 0.5) return el('td', { text: 'x' });
   const v = benchFigure(cell);
   const td = el('td');
-  if (v != null) td.append(el('span', { class: 'bar', style: `width:${Math.round(60 * v / max)}px` }), fmtNum(v, 4) + ' m');
+  if (v != null) td.append(el('span', { class: 'bar', style: `width:${Math.round(60 * v / max)}px;background:${colour}` }), fmtNum(v, 4) + ' m');
   else td.append('n/a');
   const extra = [];
   if (cell.refined_ate_rmse_m != null) extra.push('refined ' + fmtNum(cell.refined_ate_rmse_m, 4));
@@ -35,7 +35,7 @@ function benchSections() {
     });
     const max = Math.max(1e-9, ...g.rows.flatMap((r) => g.columns.map((c) => benchFigure(r.cells[c]) || 0)));
     const t = el('table', {}, el('tr', {}, el('th', { text: '' }), ...g.columns.map((c) => el('th', { text: c }))));
-    for (const r of g.rows) t.append(el('tr', {}, el('td', { text: r.name }), ...g.columns.map((c) => benchCellText(r.cells[c], max))));
+    for (const r of g.rows) t.append(el('tr', {}, el('td', { text: r.name }), ...g.columns.map((c, k) => benchCellText(r.cells[c], max, COLOURS[k % COLOURS.length]))));
     s.append(t);
   });
 }

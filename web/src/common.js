@@ -46,10 +46,34 @@ function lineDataset(label, data, colour, extra) {
     pointRadius: 0, showLine: true, fill: false }, extra || {});
 }
 
+// A plot needs no more points than it has pixels across: a 10-minute run has
+// 9000 frames. Longer series are cut into equal runs of frames, each drawn as
+// its extremes (min and max, so a spike stays) or, stacked, as its mean (the
+// same frames in every series, so the stack still adds up).
+const MAX_PLOT_POINTS = 2000;
+
+function thinned(data, stacked) {
+  if (data.length <= MAX_PLOT_POINTS) return data;
+  const k = Math.ceil(data.length / (stacked ? MAX_PLOT_POINTS : MAX_PLOT_POINTS / 2));
+  const out = [];
+  for (let i = 0; i < data.length; i += k) {
+    const run = data.slice(i, i + k);
+    if (stacked) {
+      out.push({ x: run[0].x, y: run.reduce((sum, q) => sum + q.y, 0) / run.length });
+    } else {
+      let lo = run[0], hi = run[0];
+      for (const q of run) { if (q.y < lo.y) lo = q; if (q.y > hi.y) hi = q; }
+      out.push(...(lo.x <= hi.x ? [lo, hi] : [hi, lo]));
+    }
+  }
+  return out;
+}
+
 function makeChart(parent, id, title, datasets, options) {
   const canvas = el('canvas', { id });
   parent.append(el('div', { class: 'plot' }, el('h3', { text: title }), canvas));
   const o = options || {};
+  if (o.type !== 'bar') for (const d of datasets) d.data = thinned(d.data, !!o.stacked);
   const chart = new Chart(canvas, {
     type: o.type || 'line',
     data: { datasets, labels: o.labels },

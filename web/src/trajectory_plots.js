@@ -89,23 +89,33 @@ function trajectorySection() {
   s.append(controls);
   const row = el('div', { class: 'row' });
   s.append(row);
-  const estimates = DATA.estimates.map((e) => ({ entry: e, p: alignedPositions(e), ate: ateAtPoses(e), source: sourceAtPoses(e) }));
+  // Every k-th pose (and the last) when there are more than a plot shows.
+  const shown = (n) => {
+    const k = Math.max(1, Math.ceil(n / MAX_PLOT_POINTS)), idx = [];
+    for (let i = 0; i < n; i += k) idx.push(i);
+    if (n && idx[idx.length - 1] !== n - 1) idx.push(n - 1);
+    return idx;
+  };
+  const estimates = DATA.estimates.map((e) => {
+    const idx = shown(e.trajectory.t.length), p = alignedPositions(e), ate = ateAtPoses(e), source = sourceAtPoses(e);
+    return { entry: e, idx, p, ate: idx.map((i) => ate[i]), source: idx.map((i) => source[i]) };
+  });
   const maxAte = Math.max(1e-9, ...estimates.flatMap((e) => e.ate.filter((v) => v != null)));
   // From above at equal scale, as wide as the ground covered (a corridor is long).
   const span = (p, a) => { let lo = Infinity, hi = -Infinity; for (let i = a; i < p.length; i += 3) { lo = Math.min(lo, p[i]); hi = Math.max(hi, p[i]); } return hi - lo; };
   const ref = DATA.groundtruth ? DATA.groundtruth.p : estimates[0].p;
   const topAspect = Math.max(0.8, Math.min(4, span(ref, h1) / Math.max(span(ref, h2), 1e-6))) || 1;
-  const views = [['traj-top', 'From above', h1, h2, topAspect], ['traj-side', 'From the side', h1, up, 2.0]];
+  // Beside the top view, or below it at its width when that one is wide.
+  const views = [['traj-top', 'From above', h1, h2, topAspect], ['traj-side', 'From the side', h1, up, topAspect > 1.6 ? 4 : 2]];
   const charts = views.map(([id, title, ax, ay, aspect]) => {
     const top = id === 'traj-top';
     const datasets = [];
     if (DATA.groundtruth) {
-      const g = DATA.groundtruth.p, t = DATA.groundtruth.t;
-      datasets.push(lineDataset(DATA.groundtruth.name, t.map((_, i) => ({ x: g[3 * i + ax], y: g[3 * i + ay] })), '#444444', { borderDash: [4, 3] }));
+      const g = DATA.groundtruth.p;
+      datasets.push(lineDataset(DATA.groundtruth.name, shown(DATA.groundtruth.t.length).map((i) => ({ x: g[3 * i + ax], y: g[3 * i + ay] })), '#444444', { borderDash: [4, 3] }));
     }
     estimates.forEach((e, k) => {
-      const t = e.entry.trajectory.t;
-      datasets.push(lineDataset(e.entry.trajectory.name, t.map((_, i) => ({ x: e.p[3 * i + ax], y: e.p[3 * i + ay] })), COLOURS[k % COLOURS.length]));
+      datasets.push(lineDataset(e.entry.trajectory.name, e.idx.map((i) => ({ x: e.p[3 * i + ax], y: e.p[3 * i + ay] })), COLOURS[k % COLOURS.length]));
     });
     const r = equalRanges(datasets, top ? aspect : 1, top ? 1 : 0.25, 0.06);
     const scales = {

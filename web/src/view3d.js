@@ -77,7 +77,7 @@ function frustumObject(THREE, traj, every, size) {
   return new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: '#555555' }));
 }
 
-async function view3dSection() {
+async function view3dSection(three) {
   const m = DATA.map;
   const note = m ? (m.voxel_m > 0
     ? `LiDAR map decimated for display: ${m.cls.length} of ${m.points_total} points, the first of each ${fmtNum(m.voxel_m * 100, 1)} cm voxel (map.ply has them all).`
@@ -86,7 +86,7 @@ async function view3dSection() {
   const controls = el('div', { class: 'controls' });
   const container = el('div', { class: 'view3d' });
   s.append(controls, container);
-  const { THREE, OrbitControls } = await loadThree();
+  const { THREE, OrbitControls } = await three;
   const up = upAxis();
   const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
   renderer.setPixelRatio(window.devicePixelRatio || 1);

@@ -1,8 +1,8 @@
 #pragma once
 // The LiDAR map as the report's 3D view shows it: a 10-minute run's map has
 // millions of points, more than a browser orbits fluidly, so the view gets
-// at most `budget` of them, one per voxel of the smallest edge (from 5 cm,
-// growing by a quarter each try) that keeps under the budget.
+// at most `budget` of them, one per voxel of an edge that keeps under the
+// budget (from 5 cm, grown by the square root of the count's excess each try).
 #include <cstddef>
 #include <vector>
 
