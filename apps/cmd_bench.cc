@@ -415,7 +415,7 @@ std::string quotedCommand(const BenchArgs& args) {
 void addBenchCommand(CLI::App& app, CommandAction& action) {
   CLI::App* cmd = app.add_subcommand(
       "bench", "Run a simulated suite in the modes lidar, visual, fused and the fused ablations; print the tables and "
-               "write them into docs/benchmarks.md. --suite classic (the default): room, hall, gate, gate at night, "
+               "write them into docs/benchmarks.md and bench.html beside it (bars per mode). --suite classic (the default): room, hall, gate, gate at night, "
                "room with a camera blackout and any sequence folders given, in the paper's tables. --suite families: "
                "the scenario families (lvslam simulate --family) with seeds 1..N, a table per family and a summary "
                "of whether fused beats the better single mode");

@@ -84,7 +84,7 @@ function makeChart(parent, id, title, datasets, options) {
       plugins: { legend: { labels: { boxWidth: 12 } }, tooltip: { enabled: true } },
       scales: o.scales || {
         x: { type: 'linear', title: { display: true, text: o.xTitle || 'time (s)' } },
-        y: { stacked: !!o.stacked, title: { display: true, text: o.yTitle || '' } },
+        y: { stacked: !!o.stacked, beginAtZero: !!o.stacked, title: { display: true, text: o.yTitle || '' } },
       },
     },
   });

@@ -71,8 +71,10 @@ function timingSection() {
   const s = section('Time', 'Stage times per camera frame and per LiDAR scan (stacked), the online output\'s latency ' +
     '(output wall time minus the frame\'s arrival). Real-time factor and peak memory are in the summary.');
   if (!st.frames.length || !st.frames.some((r) => r.time_ms)) { s.append(el('p', { text: 'No timings: the run was --deterministic.' })); return; }
-  const stages = ['extraction', 'depth_hints', 'visual', 'fusion', 'fusion_lines_to_visual'];
-  makeChart(s, 'time-frame', 'Time per stage per camera frame (stacked)', stages.map((k, i) =>
+  // The stages the mode ran (lidar mode has none per camera frame).
+  const stages = ['extraction', 'depth_hints', 'visual', 'fusion', 'fusion_lines_to_visual']
+    .filter((k) => st.frames.some((r) => r.time_ms && r.time_ms[k] != null));
+  if (stages.length) makeChart(s, 'time-frame', 'Time per stage per camera frame (stacked)', stages.map((k, i) =>
     lineDataset(k, frameSeries((r) => (r.time_ms && r.time_ms[k] != null ? r.time_ms[k] : 0)), COLOURS[i], { fill: i ? '-1' : 'origin' })), { yTitle: 'ms', stacked: true });
   makeChart(s, 'time-scan', 'Time per stage per LiDAR scan (stacked)', ['prepare', 'register'].map((k, i) =>
     lineDataset(k, st.scans.map((r) => ({ x: rel(r.t), y: r.time_ms ? r.time_ms[k] : 0 })), COLOURS[i + 5], { fill: i ? '-1' : 'origin' })), { yTitle: 'ms', stacked: true });
