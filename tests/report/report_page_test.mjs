@@ -1,4 +1,4 @@
-// Opens reports that the real binary writes in headless Chromium (Debian's
+// Opens reports that the real binary writes (a run's, an eval's and a bench's) in headless Chromium (Debian's
 // chromium, driven by puppeteer-core pinned in web/package-lock.json) and
 // checks what a person would see: the page loads without console errors,
 // every plot and the 3D canvas draw coloured pixels, and the trajectory plot
@@ -38,6 +38,10 @@ if (!fs.existsSync(path.join(work, 'run', 'report.html'))) {
   lvslam('run', '--sequence', 'seq', '--out', 'run');
 }
 lvslam('eval', '--gt', 'run/groundtruth.tum', '--est', 'run/trajectory.tum', '--report', 'eval.html');
+// bench.html of the smallest families suite (three short runs of the room).
+if (!fs.existsSync(path.join(work, 'bench', 'bench.html')))
+  lvslam('bench', '--suite', 'families', '--families', 'room', '--quick', '--duration', '3', '--no-ablations',
+    '--work-dir', 'bench', '--no-doc');
 
 function readTum(file) {
   return fs.readFileSync(file, 'utf8').split('\n').filter((l) => l.trim() && !l.startsWith('#'))
@@ -77,7 +81,7 @@ async function trajectoryPlot(page) {
   });
 }
 
-async function openReport(browser, file, expectedCanvases) {
+async function openReport(browser, file, expectedCanvases, withTrajectory = true) {
   const page = await browser.newPage();
   await page.setViewport({ width: 1280, height: 900 });
   const errors = [];
@@ -94,6 +98,18 @@ async function openReport(browser, file, expectedCanvases) {
   const canvases = await colouredPixels(page);
   for (const id of expectedCanvases) check(canvases.some((c) => c.id === id), `${file}: has canvas ${id}`);
   for (const c of canvases) check(c.coloured > 50, `${file}: ${c.id} (${c.width}x${c.height}) draws coloured pixels (${c.coloured})`);
+  if (withTrajectory) await checkTrajectoryPlot(page, file);
+  if (args.screenshots) {  // one PNG per section, for docs/
+    fs.mkdirSync(args.screenshots, { recursive: true });
+    const sections = await page.$$('section');
+    for (const [i, sec] of sections.entries())
+      await sec.screenshot({ path: path.join(args.screenshots, `${path.basename(file, '.html')}-${i}.png`) });
+  }
+  await page.close();
+}
+
+// The trajectory plot spans the ground truth, as the run wrote it.
+async function checkTrajectoryPlot(page, file) {
   const plot = await trajectoryPlot(page).catch(() => ({ axes: [] }));
   check(plot.axes.length === 2, `${file}: has a trajectory plot with two axes`);
   const gt = readTum(path.join(work, 'run', 'groundtruth.tum'));
@@ -107,13 +123,6 @@ async function openReport(browser, file, expectedCanvases) {
     check(slo <= lo && shi >= hi && shi - slo < 2 * Math.max(hi - lo, 1) + 1,
       `${file}: the ${name} axis [${slo.toFixed(3)}, ${shi.toFixed(3)}] frames it`);
   });
-  if (args.screenshots) {  // one PNG per section, for docs/
-    fs.mkdirSync(args.screenshots, { recursive: true });
-    const sections = await page.$$('section');
-    for (const [i, sec] of sections.entries())
-      await sec.screenshot({ path: path.join(args.screenshots, `${path.basename(file, '.html')}-${i}.png`) });
-  }
-  await page.close();
 }
 
 const browser = await puppeteer.launch({
@@ -127,6 +136,7 @@ try {
   await openReport(browser, 'run/report.html', ['traj-top', 'traj-side', 'err-ate', 'det-source', 'det-tracking',
     'fus-lines', 'fus-classes', 'time-frame', 'time-scan', 'time-latency', 'view3d-canvas']);
   await openReport(browser, 'eval.html', ['traj-top', 'traj-side', 'err-ate']);
+  await openReport(browser, 'bench/bench.html', ['bench-0'], false);
 } finally {
   await browser.close();
 }
