@@ -100,7 +100,9 @@ async function view3dSection(three) {
   camera.up.set(...[0, 1, 2].map((a) => (a === up ? 1 : 0)));
   const layers = {};
   const online = DATA.estimates[0];
-  if (m) { layers['map by class'] = mapObject(THREE, up, true); layers['map by height'] = mapObject(THREE, up, false); }
+  // The map in both colourings; a choice shows one of them.
+  const byClass = m && mapObject(THREE, up, true), byHeight = m && mapObject(THREE, up, false);
+  if (m) { layers['LiDAR map'] = new THREE.Group(); layers['LiDAR map'].add(byClass, byHeight); byHeight.visible = false; }
   DATA.estimates.forEach((e, k) => { layers[e.trajectory.name] = polyline(THREE, e.trajectory.p, COLOURS[k % COLOURS.length]); });
   if (DATA.groundtruth && online.errors) layers[DATA.groundtruth.name] = polyline(THREE, unalign(DATA.groundtruth.p, online.errors), '#444444');
   if (DATA.lines && DATA.lines.p.length) layers['fusion lines (red), visual line landmarks (green/orange)'] = lineObject(THREE);
@@ -110,11 +112,22 @@ async function view3dSection(three) {
   const render = () => renderer.render(scene, camera);
   for (const [name, object] of Object.entries(layers)) {
     const box = el('input', { type: 'checkbox' });
-    box.checked = name !== 'map by height';
-    object.visible = box.checked;
+    box.checked = true;
     box.addEventListener('change', () => { object.visible = box.checked; render(); });
     controls.append(el('label', {}, box, ' ' + name));
     scene.add(object);
+  }
+  if (m) {
+    const colouring = el('select', { id: 'map-colour' }, el('option', { value: 'class', text: 'feature class' }),
+      el('option', { value: 'height', text: 'height' }));
+    colouring.addEventListener('change', () => {
+      byClass.visible = colouring.value === 'class';
+      byHeight.visible = !byClass.visible;
+      render();
+    });
+    const legend = el('span', { class: 'note' }, ...CLASS_NAMES.map((name, c) =>
+      el('span', { style: `color:${CLASS_COLOURS[c]};margin-right:8px`, text: '\u25cf ' + name })));
+    controls.append(el('label', { text: 'map colour: ' }, colouring), legend);
   }
   // Frame the map and the trajectories (a stray line landmark far out would
   // shrink everything else to a dot).
