@@ -1,6 +1,7 @@
 // `lvslam report OUT_DIR`: (re)builds report.html from a folder `lvslam run`
 // wrote, one self-contained page of its trajectories, errors, records and map.
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -18,6 +19,7 @@ void writeRunReportOrWarn(const std::string& run_dir) {
   std::string looked_in;
   const std::optional<report::ReportAssets> assets = report::loadReportAssets(&looked_in);
   if (!assets) {
+    std::filesystem::remove(run_dir + "/report.html");  // an earlier run's page would mislead
     std::cout << report::missingAssetsWarning(run_dir + "/report.html", looked_in);
     return;
   }

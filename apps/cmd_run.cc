@@ -3,6 +3,7 @@
 // trajectory.tum, stats.json, map.ply, lines.ply and report.html and, when
 // there is ground truth, groundtruth.tum and prints the accuracy.
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -96,8 +97,11 @@ int runRun(RunArgs args) {
   if (run.accuracy) std::cout << "online (trajectory.tum):\n" << eval::formatSummary(*run.accuracy);
   if (run.accuracy_refined)
     std::cout << "offline refinement (trajectory_refined.tum):\n" << eval::formatSummary(*run.accuracy_refined);
+  // No stale file from an earlier run into the same folder may reach the report.
   if (const std::optional<Trajectory> gt = system::groundTruthInOutputFrame(recording, run.output))
     writeTum(args.out_dir + "/groundtruth.tum", *gt);
+  else
+    std::filesystem::remove(args.out_dir + "/groundtruth.tum");
   writeRunReportOrWarn(args.out_dir);
   return 0;
 }

@@ -228,6 +228,7 @@ TEST(Cli, RunWithoutReportAssetsWarnsInOneLine) {
   dir.write("seq/lidar/a.bin", std::string(12 * 10, '\0'));
   dir.write("seq/lidar/b.bin", std::string(12 * 10, '\0'));
   dir.write("seq/lidar/times.txt", "0.0 a.bin\n0.1 b.bin\n");
+  dir.write("out/report.html", "an earlier run's page");
   ::setenv("LVSLAM_REPORT_ASSETS", dir.file("nowhere").c_str(), 1);
   const RunResult r = runLvslam(dir, "run --sequence seq --out out");
   ::unsetenv("LVSLAM_REPORT_ASSETS");
