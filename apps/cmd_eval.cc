@@ -2,6 +2,7 @@
 #include <cctype>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "command.h"
@@ -9,6 +10,7 @@
 #include "lvslam/eval/eval_report.h"
 #include "lvslam/eval/evaluate.h"
 #include "lvslam/io/tum.h"
+#include "lvslam/report/eval_report_page.h"
 
 namespace lvslam::apps {
 
@@ -24,6 +26,7 @@ struct EvalArgs {
   std::string rpe_pairs_on = "est";
   eval::EvalOptions options;
   bool json = false;
+  std::string report_path;  // --report FILE.html
 };
 
 Trajectory readTrajectory(const std::string& path, const std::string& format,
@@ -37,7 +40,17 @@ std::string toLower(std::string text) {
   return text;
 }
 
+// --report needs the page's assets: checked before any work.
+std::optional<report::ReportAssets> reportAssets(const EvalArgs& args) {
+  if (args.report_path.empty()) return std::nullopt;
+  std::string looked_in;
+  std::optional<report::ReportAssets> assets = report::loadReportAssets(&looked_in);
+  if (!assets) throw Error(args.report_path, "not written: " + report::missingAssetsReason(looked_in));
+  return assets;
+}
+
 int runEval(const EvalArgs& args) {
+  const std::optional<report::ReportAssets> assets = reportAssets(args);
   if (args.format == "tum" && !(args.times_path.empty() && args.gt_times_path.empty()))
     throw Error("lvslam eval", "--times and --gt-times apply to --format kitti only");
   const std::string& gt_times = args.gt_times_path.empty() ? args.times_path : args.gt_times_path;
@@ -55,6 +68,10 @@ int runEval(const EvalArgs& args) {
   options.est_name = args.est_path;
   const eval::EvalResult result = eval::evaluate(gt, est, options);
   std::cout << (args.json ? eval::formatJson(result) + "\n" : eval::formatSummary(result));
+  if (assets) {
+    report::writeEvalReport(args.report_path, gt, args.gt_path, est, args.est_path, options.alignment, *assets);
+    if (!args.json) std::cout << "wrote " << args.report_path << "\n";
+  }
   return 0;
 }
 
@@ -96,6 +113,9 @@ void addEvalCommand(CLI::App& app, CommandAction& action) {
       ->check(CLI::IsMember({"est", "gt"}, CLI::ignore_case))
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object instead of the summary");
+  cmd->add_option("--report", args->report_path,
+                  "Also write this self-contained HTML page: both trajectories from above and from the side, ATE "
+                  "and RPE (1 m, 10 m) over time and their statistics");
   cmd->callback([&action, args] { action = [args] { return runEval(*args); }; });
 }
 
