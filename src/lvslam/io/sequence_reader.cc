@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/file_access.h"
 #include "lvslam/io/tum.h"
 
 namespace lvslam {
@@ -22,20 +23,28 @@ void warnAboutJumps(const std::vector<TimedFile>& files, const std::string& what
                  files[i].t - files[i - 1].t, files[i].path);
 }
 
+// A declared sensor without data is read as absent (hasCamera/hasLidar), so
+// the run picks the mode the other sensor feeds instead of giving no pose.
+void warnIfEmpty(const std::vector<TimedFile>& files, const std::string& times, const std::string& what) {
+  if (files.empty()) spdlog::warn("{}: lists no {}; the sequence is read without this sensor", times, what);
+}
+
 }  // namespace
 
 SequenceReader::SequenceReader(const std::string& directory) : directory_(directory) {
-  if (!fs::is_directory(directory)) throw Error(directory, "sequence folder not found");
+  if (fileKind(directory) != FileKind::kDirectory) throw Error(directory, "sequence folder not found");
   info_ = readSequenceInfo((fs::path(directory) / "sequence.yaml").string());
   if (info_.camera) {
     const std::string times = (fs::path(directory) / "camera" / "times.txt").string();
     camera_files_ = readTimesFile(times);
     warnAboutJumps(camera_files_, times);
+    warnIfEmpty(camera_files_, times, "image");
   }
   if (info_.lidar) {
     const std::string times = (fs::path(directory) / "lidar" / "times.txt").string();
     lidar_files_ = readTimesFile(times);
     warnAboutJumps(lidar_files_, times);
+    warnIfEmpty(lidar_files_, times, "scan");
     layout_ = ScanLayout::fromFields(info_.lidar->point_fields);
   }
   if (hasGroundTruth() && !info_.groundtruth_frame)
@@ -44,7 +53,7 @@ SequenceReader::SequenceReader(const std::string& directory) : directory_(direct
 }
 
 bool SequenceReader::hasGroundTruth() const {
-  return fs::is_regular_file(fs::path(directory_) / "groundtruth.txt");
+  return fileKind((fs::path(directory_) / "groundtruth.txt").string()) == FileKind::kRegular;
 }
 
 Trajectory SequenceReader::groundTruth() const {

@@ -8,13 +8,13 @@
 #include <fmt/format.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/file_access.h"
 #include "lvslam/core/timestamp.h"
 
 namespace lvslam {
 
 std::vector<TimedFile> readTimesFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path, "file not found");
+  std::ifstream in = openInputFile(path);
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   std::vector<TimedFile> files;
   std::string line;
@@ -31,7 +31,8 @@ std::vector<TimedFile> readTimesFile(const std::string& path) {
       throw Error(where, fmt::format("time stamp {} is not after the previous one ({}): times must increase",
                                      formatTimestamp(t), formatTimestamp(files.back().t)));
     const std::filesystem::path full = folder / file;
-    if (!std::filesystem::is_regular_file(full)) throw Error(where, "file '" + full.string() + "' not found");
+    if (fileKind(full.string(), where) != FileKind::kRegular)
+      throw Error(where, "file '" + full.string() + "' not found");
     files.push_back({t, full.string()});
   }
   return files;

@@ -1,0 +1,158 @@
+// The fault matrix (#32): a short clean simulated sequence, broken in one way
+// per test, run through the real binary. Each case checks the exit code (0
+// ok, 1 no result, 2 bad input), the one stderr line naming the file and the
+// line or key, and what was written. Input faults run `--mode lidar`: they
+// are about reading, not fusion, and it keeps the suite fast.
+#include <unistd.h>
+
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "apps/run_lvslam.h"
+#include "support/temp_dir.h"
+#include "system/sim_cache.h"
+
+namespace lvslam {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::lines;
+using testing::RunResult;
+using testing::runLvslam;
+using testing::slurp;
+using testing::TempDir;
+
+// A 3 s room, simulated once per build tree, copied into `dir`/seq.
+std::string cleanSequence(const TempDir& dir) {
+  sim::SimOptions options;
+  options.scenario = "room";
+  options.duration = 3.0;
+  const std::string cached = testing::cachedSimulation("faults-room-3s", options);
+  fs::copy(cached, dir.path() / "seq", fs::copy_options::recursive);
+  return "seq";
+}
+
+// Runs a command as user nobody when the test runs as root (root reads what
+// permissions forbid); the folder must then be open to nobody.
+std::string asUnprivileged(const TempDir& dir) {
+  if (::geteuid() != 0) return "";
+  fs::permissions(dir.path(), fs::perms::all);
+  return "setpriv --reuid=65534 --regid=65534 --clear-groups ";
+}
+
+// The clean sequence with some files replaced (path below `dir` -> text),
+// then `lvslam <args>`.
+RunResult runEdited(const TempDir& dir, std::initializer_list<std::pair<const char*, std::string>> files,
+                    const std::string& args) {
+  cleanSequence(dir);
+  for (const auto& [path, text] : files) dir.write(path, text);
+  return runLvslam(dir, args);
+}
+
+void expectOneErrorLine(const RunResult& r, int code, const std::string& names) {
+  EXPECT_EQ(r.exit_code, code) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(names), std::string::npos) << r.err;
+}
+
+TEST(FaultMatrix, CleanSequenceRunsAndWritesItsOutputs) {
+  TempDir dir;
+  const RunResult r = runLvslam(dir, "run --sequence " + cleanSequence(dir) + " --mode lidar --out out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_TRUE(fs::exists(dir.path() / "out/trajectory.tum"));
+}
+
+TEST(FaultMatrix, FileNameTooLongInTimesNamesTheLine) {
+  TempDir dir;
+  cleanSequence(dir);
+  dir.write("seq/lidar/times.txt", slurp(dir.file("seq/lidar/times.txt")) + "1800000000.0 " + std::string(300, 'n') + ".bin\n");
+  const int line = lines(slurp(dir.file("seq/lidar/times.txt")));
+  const RunResult r = runLvslam(dir, "run --sequence seq --mode lidar --out out");
+  expectOneErrorLine(r, 2, "lidar/times.txt:" + std::to_string(line) + ": cannot access");
+  EXPECT_NE(r.err.find("too long"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(FaultMatrix, SymlinkLoopAsTheSequenceIsNamed) {
+  TempDir dir;
+  fs::create_symlink("loop", dir.path() / "loop");
+  const RunResult r = runLvslam(dir, "run --sequence loop --mode lidar --out out");
+  expectOneErrorLine(r, 2, "loop: cannot access");
+  EXPECT_NE(r.err.find("symbolic links"), std::string::npos) << r.err;
+}
+
+// `lvslam run --mode lidar` on the clean sequence with `folder` closed to
+// the user that runs it.
+RunResult runWithFolderClosed(const TempDir& dir, const std::string& folder) {
+  cleanSequence(dir);
+  const std::string prefix = asUnprivileged(dir);
+  fs::permissions(dir.path() / folder, fs::perms::none);
+  const RunResult r = runLvslam(dir, "run --sequence seq --mode lidar --out out", prefix);
+  fs::permissions(dir.path() / folder, fs::perms::owner_all);
+  return r;
+}
+
+TEST(FaultMatrix, UnreadableSequenceFolderIsNamed) {
+  TempDir dir;
+  const RunResult r = runWithFolderClosed(dir, "seq");
+  expectOneErrorLine(r, 2, "seq/sequence.yaml: cannot access");
+  EXPECT_NE(r.err.find("Permission denied"), std::string::npos) << r.err;
+}
+
+TEST(FaultMatrix, UnreadableLidarFolderIsNotCalledMissing) {
+  TempDir dir;
+  const RunResult r = runWithFolderClosed(dir, "seq/lidar");
+  expectOneErrorLine(r, 2, "seq/lidar/times.txt: cannot access");
+  EXPECT_NE(r.err.find("Permission denied"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("not found"), std::string::npos) << r.err;
+}
+
+TEST(FaultMatrix, ConfigWithANonScalarKeyNamesFileAndLine) {
+  TempDir dir;
+  const RunResult r = runEdited(dir, {{"bad.yaml", "system:\n  ? [a, b]\n  : 1\n"}},
+                                "run --sequence seq --mode lidar --config bad.yaml --out out");
+  expectOneErrorLine(r, 2, "bad.yaml:2: key 'system'");
+}
+
+TEST(FaultMatrix, EmptyCameraTimesInFusedModeRunsLidarWithAWarning) {
+  TempDir dir;
+  const RunResult r = runEdited(dir, {{"seq/camera/times.txt", ""}}, "run --sequence seq --mode fused --out out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("camera/times.txt: lists no image"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("running mode lidar instead of fused"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("warning"), std::string::npos) << "warnings belong on stderr: " << r.out;
+  EXPECT_GT(lines(slurp(dir.file("out/trajectory.tum"))), 20);
+}
+
+TEST(FaultMatrix, EmptyCameraTimesInVisualModeIsNoResult) {
+  TempDir dir;
+  const RunResult r = runEdited(dir, {{"seq/camera/times.txt", ""}}, "run --sequence seq --mode visual --out out");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("no result: mode visual needs camera data"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out/trajectory.tum"));
+}
+
+TEST(FaultMatrix, SequenceWithoutDataIsNoResult) {
+  TempDir dir;
+  const RunResult r =
+      runEdited(dir, {{"seq/camera/times.txt", ""}, {"seq/lidar/times.txt", ""}}, "run --sequence seq --out out");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("no result: the recording has neither camera images nor LiDAR scans"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out/trajectory.tum"));
+}
+
+TEST(FaultMatrix, FolderGivenAsTheEstimateIsNamedAsSuch) {
+  TempDir dir;
+  cleanSequence(dir);
+  const RunResult r = runLvslam(dir, "eval --gt seq/groundtruth.txt --est seq");
+  expectOneErrorLine(r, 2, "seq: is a folder, not a file");
+}
+
+}  // namespace
+}  // namespace lvslam
