@@ -12,29 +12,20 @@
 
 #include <gtest/gtest.h>
 
+#include "apps/clean_sequence.h"
 #include "apps/run_lvslam.h"
 #include "support/temp_dir.h"
-#include "system/sim_cache.h"
 
 namespace lvslam {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::cleanSequence;
 using testing::lines;
 using testing::RunResult;
 using testing::runLvslam;
 using testing::slurp;
 using testing::TempDir;
-
-// A 3 s room, simulated once per build tree, copied into `dir`/seq.
-std::string cleanSequence(const TempDir& dir) {
-  sim::SimOptions options;
-  options.scenario = "room";
-  options.duration = 3.0;
-  const std::string cached = testing::cachedSimulation("faults-room-3s", options);
-  fs::copy(cached, dir.path() / "seq", fs::copy_options::recursive);
-  return "seq";
-}
 
 // Runs a command as user nobody when the test runs as root (root reads what
 // permissions forbid); the folder must then be open to nobody.
