@@ -7,14 +7,17 @@
 
 #include <filesystem>
 #include <initializer_list>
+#include <sstream>
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "apps/clean_sequence.h"
 #include "apps/run_lvslam.h"
 #include "support/temp_dir.h"
+#include "system/sim_cache.h"
 
 namespace lvslam {
 namespace {
@@ -136,6 +139,50 @@ TEST(FaultMatrix, SequenceWithoutDataIsNoResult) {
   EXPECT_NE(r.err.find("no result: the recording has neither camera images nor LiDAR scans"), std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(dir.path() / "out/trajectory.tum"));
+}
+
+// camera/times.txt with `seconds` added from line `from` on.
+std::string shiftedCameraTimes(const TempDir& dir, int from, double seconds) {
+  std::istringstream in(slurp(dir.file("seq/camera/times.txt")));
+  std::string out, line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (n >= from) {
+      std::istringstream fields(line);
+      double t = 0.0;
+      std::string file;
+      fields >> t >> file;
+      line = fmt::format("{:.9f} {}", t + seconds, file);
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+TEST(FaultMatrix, OneSensorsClockJumpIsNamedNotCalledADropOut) {
+  TempDir dir;
+  cleanSequence(dir);
+  dir.write("seq/camera/times.txt", shiftedCameraTimes(dir, 20, 100.0));
+  const RunResult r = runLvslam(dir, "run --sequence seq --out out");
+  expectOneErrorLine(r, 2, "seq/camera/times.txt:20: time stamp");
+  EXPECT_NE(r.err.find("jumps by 100.0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("clock jumped, not a drop-out"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(FaultMatrix, ALidarDropOutStillRuns) {
+  TempDir dir;
+  sim::SimOptions options;
+  options.scenario = "room";
+  options.duration = 3.0;
+  options.lidar_dropout = sim::TimeInterval{1.0, 2.0};
+  fs::copy(testing::cachedSimulation("faults-room-3s-lidar-dropout-1-2", options), dir.path() / "seq",
+           fs::copy_options::recursive);
+  const RunResult r = runLvslam(dir, "run --sequence seq --out out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("lidar/times.txt: time jumps by"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(a drop-out"), std::string::npos) << r.err;
+  EXPECT_GT(lines(slurp(dir.file("out/trajectory.tum"))), 40);
 }
 
 TEST(FaultMatrix, FolderGivenAsTheEstimateIsNamedAsSuch) {

@@ -8,6 +8,7 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/file_access.h"
+#include "lvslam/io/clock_check.h"
 #include "lvslam/io/tum.h"
 
 namespace lvslam {
@@ -34,18 +35,22 @@ void warnIfEmpty(const std::vector<TimedFile>& files, const std::string& times, 
 SequenceReader::SequenceReader(const std::string& directory) : directory_(directory) {
   if (fileKind(directory) != FileKind::kDirectory) throw Error(directory, "sequence folder not found");
   info_ = readSequenceInfo((fs::path(directory) / "sequence.yaml").string());
+  const std::string camera_times = (fs::path(directory) / "camera" / "times.txt").string();
+  const std::string lidar_times = (fs::path(directory) / "lidar" / "times.txt").string();
+  if (info_.camera) camera_files_ = readTimesFile(camera_times);
+  if (info_.lidar) {
+    lidar_files_ = readTimesFile(lidar_times);
+    layout_ = ScanLayout::fromFields(info_.lidar->point_fields);
+  }
+  // A clock jump is an error; only then are the remaining gaps drop-outs.
+  checkClocksAgree(camera_files_, camera_times, lidar_files_, lidar_times);
   if (info_.camera) {
-    const std::string times = (fs::path(directory) / "camera" / "times.txt").string();
-    camera_files_ = readTimesFile(times);
-    warnAboutJumps(camera_files_, times);
-    warnIfEmpty(camera_files_, times, "image");
+    warnAboutJumps(camera_files_, camera_times);
+    warnIfEmpty(camera_files_, camera_times, "image");
   }
   if (info_.lidar) {
-    const std::string times = (fs::path(directory) / "lidar" / "times.txt").string();
-    lidar_files_ = readTimesFile(times);
-    warnAboutJumps(lidar_files_, times);
-    warnIfEmpty(lidar_files_, times, "scan");
-    layout_ = ScanLayout::fromFields(info_.lidar->point_fields);
+    warnAboutJumps(lidar_files_, lidar_times);
+    warnIfEmpty(lidar_files_, lidar_times, "scan");
   }
   if (hasGroundTruth() && !info_.groundtruth_frame)
     throw Error((fs::path(directory) / "sequence.yaml").string(),
