@@ -185,6 +185,31 @@ TEST(FaultMatrix, ALidarDropOutStillRuns) {
   EXPECT_GT(lines(slurp(dir.file("out/trajectory.tum"))), 40);
 }
 
+TEST(FaultMatrix, AReusedOutputFolderKeepsNoEarlierRunsFiles) {
+  TempDir dir;
+  cleanSequence(dir);
+  dir.write("out/trajectory.tum", "stale\n");
+  dir.write("out/subsystems/visual_map_7.tum", "stale\n");
+  dir.write("out/subsystems/notes.txt", "the user's own\n");
+  const RunResult r = runLvslam(dir, "run --sequence seq --mode lidar --out out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(slurp(dir.file("out/trajectory.tum")), "stale\n");
+  EXPECT_FALSE(fs::exists(dir.path() / "out/subsystems/visual_map_7.tum"));
+  EXPECT_TRUE(fs::exists(dir.path() / "out/subsystems/notes.txt"));
+  // A later run without result leaves no trajectory that could pass for its own.
+  dir.write("seq/lidar/times.txt", "");
+  EXPECT_EQ(runLvslam(dir, "run --sequence seq --mode lidar --out out").exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir.path() / "out/trajectory.tum"));
+  EXPECT_FALSE(fs::exists(dir.path() / "out/stats.json"));
+}
+
+TEST(FaultMatrix, AnOutputFolderThatIsAFileIsNamed) {
+  TempDir dir;
+  const RunResult r = runEdited(dir, {{"out", "a file\n"}}, "run --sequence seq --mode lidar --out out");
+  expectOneErrorLine(r, 2, "out: the output folder is not a folder");
+  EXPECT_EQ(slurp(dir.file("out")), "a file\n");
+}
+
 TEST(FaultMatrix, FolderGivenAsTheEstimateIsNamedAsSuch) {
   TempDir dir;
   cleanSequence(dir);
