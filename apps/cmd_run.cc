@@ -19,7 +19,7 @@
 #include "lvslam/io/recording.h"
 #include "lvslam/sim/simulate_sequence.h"
 #include "lvslam/system/run_recording.h"
-#include "lvslam/system/stale_outputs.h"
+#include "lvslam/system/output_folder.h"
 
 namespace lvslam::apps {
 
@@ -83,7 +83,7 @@ system::SystemConfig loadConfig(const RunArgs& args) {
 int runRun(RunArgs args) {
   if (args.input.sequence_dir.empty() && args.input.bag_files.empty()) args.input.sequence_dir = defaultSequence();
   Recording recording = openRecording(args.input);
-  system::removeRunOutputs(args.out_dir);  // from here on, whatever happens, no earlier run's files stay
+  system::prepareOutputFolder(args.out_dir);  // no earlier run's files stay, whatever happens now
   args.mode = modeFor(args, *recording.source);
   const system::SystemConfig config = loadConfig(args);
   ProgressLine progress;

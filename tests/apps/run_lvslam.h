@@ -4,8 +4,6 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "support/temp_dir.h"
@@ -17,13 +15,6 @@ struct RunResult {
   std::string out, err;
 };
 
-inline std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // `prefix` goes before the binary (e.g. "setpriv ... " to run as another user).
 inline RunResult runLvslam(const TempDir& dir, const std::string& args, const std::string& prefix = "") {
   const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
@@ -32,8 +23,8 @@ inline RunResult runLvslam(const TempDir& dir, const std::string& args, const st
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;  // -1: killed by a signal (a crash)
-  r.out = slurp(out);
-  r.err = slurp(err);
+  r.out = slurpBinary(out);
+  r.err = slurpBinary(err);
   return r;
 }
 

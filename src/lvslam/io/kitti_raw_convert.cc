@@ -3,10 +3,10 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <opencv2/imgcodecs.hpp>
 #include <spdlog/spdlog.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/io/image_file.h"
 #include "lvslam/io/kitti_raw_calib.h"
 #include "lvslam/io/kitti_raw_oxts.h"
 #include "lvslam/io/kitti_raw_time.h"
@@ -46,8 +46,7 @@ void writeImages(const fs::path& image_dir, SequenceWriter& writer, KittiRawConv
       ++stats.skipped;
       continue;
     }
-    const cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
-    if (image.empty()) throw Error(path, "cannot read image");
+    const cv::Mat image = readImageFile(path);
     writer.writeImage(times[i], image);
     last = times[i];
     ++stats.images;

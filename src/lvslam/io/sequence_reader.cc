@@ -3,12 +3,12 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <opencv2/imgcodecs.hpp>
 #include <spdlog/spdlog.h>
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/file_access.h"
 #include "lvslam/io/clock_check.h"
+#include "lvslam/io/image_file.h"
 #include "lvslam/io/tum.h"
 
 namespace lvslam {
@@ -78,8 +78,7 @@ ImageFrame SequenceReader::loadImage(std::size_t index) const {
   const TimedFile& f = camera_files_.at(index);
   ImageFrame frame;
   frame.timestamp = f.t;
-  frame.image = cv::imread(f.path, cv::IMREAD_UNCHANGED);
-  if (frame.image.empty()) throw Error(f.path, "cannot decode image");
+  frame.image = readImageFile(f.path);
   if (frame.image.depth() != CV_8U) throw Error(f.path, "image is not 8-bit");
   const int channels = frame.image.channels();
   if (channels != 1 && channels != 3)
@@ -95,7 +94,10 @@ LidarScan SequenceReader::loadScan(std::size_t index) const {
   const TimedFile& f = lidar_files_.at(index);
   LidarScan scan;
   scan.timestamp = f.t;
-  readScanFile(f.path, *layout_, scan);
+  // An empty file is read as a scan without points (a documented recovery:
+  // the odometry predicts across it), but not silently.
+  if (readScanFile(f.path, *layout_, scan).records == 0)
+    spdlog::warn("{}: empty scan file (no points); the odometry counts it lost and predicts across it", f.path);
   return scan;
 }
 
