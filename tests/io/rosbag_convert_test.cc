@@ -1,6 +1,7 @@
 // Bags written with rosbag_storage's own writer, converted to sequence
 // folders and compared with what was written; bad input named precisely.
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <random>
 
@@ -300,6 +301,31 @@ TEST(RosbagConvertBadInput, UnknownEncodingNamesBagTopicAndEncoding) {
   testing::TempDir dir3;
   const std::string bag3 = writeOneMessageBag(dir3, "/cam", testing::compressedImage(kT0, {1, 2, 3}, "png"));
   expectMentions(convertError(bag3, "", "/cam", dir3), {bag3, "/cam", "cannot decode"});
+  // A failed conversion leaves nothing: no folder, no partial one.
+  EXPECT_FALSE(std::filesystem::exists(dir3.file("out")));
+  EXPECT_FALSE(std::filesystem::exists(dir3.file("out.partial")));
+}
+
+TEST(RosbagConvertAtomic, ReplacesAnEarlierSequenceButNoOtherFolder) {
+  testing::TempDir dir;
+  const std::string bag = writeOneMessageBag(dir, "/velodyne_points", testing::velodyneCloud(kT0, sweep(1, false)));
+  BagConvertOptions options;
+  options.bags = {bag};
+  options.lidar_topic = "/velodyne_points";
+  options.out_dir = dir.file("out");
+  dir.write("out/sequence.yaml", "an earlier conversion\n");
+  dir.write("out/lidar/stale.bin", "x");
+  EXPECT_EQ(convertBags(options).scans, 1u);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out/lidar/stale.bin")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out/INCOMPLETE")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.partial")));
+  SequenceReader reader(dir.file("out"));
+  EXPECT_EQ(reader.lidarFiles().size(), 1u);
+
+  options.out_dir = dir.file("mine");
+  dir.write("mine/notes.txt", "the user's own\n");
+  expectMentions(testing::errorMessageOf([&] { convertBags(options); }), {"mine", "not a sequence folder"});
+  EXPECT_TRUE(std::filesystem::exists(dir.file("mine/notes.txt")));
 }
 
 TEST(RosbagConvertBadInput, CloudWithoutXNamesBagTopicAndField) {

@@ -299,6 +299,14 @@ TEST(SequenceFolder, ADeclaredSensorWithoutDataCountsAsAbsent) {
   EXPECT_TRUE(reader.hasLidar());
 }
 
+TEST(SequenceFolderBadInput, AFolderMarkedIncompleteIsRefused) {
+  TempDir dir;
+  writeValidFolder(dir);
+  dir.write("seq/INCOMPLETE", "");
+  const std::string msg = errorMessageOf([&] { SequenceReader r(dir.file("seq")); });
+  EXPECT_NE(msg.find("seq/INCOMPLETE: the folder is incomplete"), std::string::npos) << msg;
+}
+
 TEST(SequenceFolderBadInput, GroundTruthWithoutFrameKey) {
   TempDir dir;
   writeValidFolder(dir);

@@ -7,6 +7,7 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/file_access.h"
+#include "lvslam/io/atomic_folder.h"
 #include "lvslam/io/clock_check.h"
 #include "lvslam/io/image_file.h"
 #include "lvslam/io/tum.h"
@@ -34,6 +35,9 @@ void warnIfEmpty(const std::vector<TimedFile>& files, const std::string& times, 
 
 SequenceReader::SequenceReader(const std::string& directory) : directory_(directory) {
   if (fileKind(directory) != FileKind::kDirectory) throw Error(directory, "sequence folder not found");
+  const std::string marker = (fs::path(directory) / kIncompleteMarker).string();
+  if (fileKind(marker) != FileKind::kMissing)
+    throw Error(marker, "the folder is incomplete: the conversion that wrote it did not finish");
   info_ = readSequenceInfo((fs::path(directory) / "sequence.yaml").string());
   const std::string camera_times = (fs::path(directory) / "camera" / "times.txt").string();
   const std::string lidar_times = (fs::path(directory) / "lidar" / "times.txt").string();
