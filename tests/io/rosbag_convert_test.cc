@@ -305,6 +305,11 @@ TEST(RosbagConvertBadInput, UnknownEncodingNamesBagTopicAndEncoding) {
   testing::TempDir dir3;
   const std::string bag3 = writeOneMessageBag(dir3, "/cam", testing::compressedImage(kT0, {1, 2, 3}, "png"));
   expectMentions(convertError(bag3, "", "/cam", dir3), {bag3, "/cam", "cannot decode"});
+  testing::TempDir dir4;
+  std::vector<std::uint8_t> png = encode(".png", randomImage(CV_8UC3, 4));
+  png.resize(png.size() / 2);
+  const std::string bag4 = writeOneMessageBag(dir4, "/cam", testing::compressedImage(kT0, png, "png"));
+  expectMentions(convertError(bag4, "", "/cam", dir4), {bag4, "/cam", "damaged PNG: the file ends at byte"});
   // A failed conversion leaves nothing: no folder, no partial one.
   EXPECT_FALSE(std::filesystem::exists(dir3.file("out")));
   EXPECT_FALSE(std::filesystem::exists(dir3.file("out.partial")));
