@@ -347,6 +347,22 @@ TEST(FaultMatrix, UnwritableOutputIsNamedBeforeTheRun) {
   expectOneErrorLine(below, 2, "locked/out: cannot create the output folder: Permission denied");
 }
 
+TEST(FaultMatrix, AMisspeltPointFieldIsWarnedAboutOnce) {
+  TempDir dir;
+  cleanSequence(dir);
+  std::string yaml = slurpBinary(dir.file("seq/sequence.yaml"));
+  yaml.replace(yaml.find("time, ring"), 4, "tiem");
+  dir.write("seq/sequence.yaml", yaml);
+  const RunResult r = runLvslam(dir, "run --sequence seq --mode lidar --out out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(lines(r.err), 2) << r.err;
+  EXPECT_NE(r.err.find("seq/sequence.yaml: key 'lidar.point_fields': unknown field 'tiem' is skipped; did you mean "
+                       "'time'?"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("no per-point 'time'"), std::string::npos) << r.err;
+}
+
 TEST(FaultMatrix, FolderGivenAsTheEstimateIsNamedAsSuch) {
   TempDir dir;
   cleanSequence(dir);

@@ -10,6 +10,7 @@
 #include "lvslam/io/atomic_folder.h"
 #include "lvslam/io/clock_check.h"
 #include "lvslam/io/image_file.h"
+#include "lvslam/io/point_field_check.h"
 #include "lvslam/io/tum.h"
 
 namespace lvslam {
@@ -35,16 +36,17 @@ void warnIfEmpty(const std::vector<TimedFile>& files, const std::string& times, 
 
 SequenceReader::SequenceReader(const std::string& directory) : directory_(directory) {
   if (fileKind(directory) != FileKind::kDirectory) throw Error(directory, "sequence folder not found");
+  info_ = readSequenceInfo((fs::path(directory) / "sequence.yaml").string());
   const std::string marker = (fs::path(directory) / kIncompleteMarker).string();
   if (fileKind(marker) != FileKind::kMissing)
     throw Error(marker, "the folder is incomplete: the conversion that wrote it did not finish");
-  info_ = readSequenceInfo((fs::path(directory) / "sequence.yaml").string());
   const std::string camera_times = (fs::path(directory) / "camera" / "times.txt").string();
   const std::string lidar_times = (fs::path(directory) / "lidar" / "times.txt").string();
   if (info_.camera) camera_files_ = readTimesFile(camera_times);
   if (info_.lidar) {
     lidar_files_ = readTimesFile(lidar_times);
     layout_ = ScanLayout::fromFields(info_.lidar->point_fields);
+    field_warnings_ = pointFieldWarnings(info_.lidar->point_fields, (fs::path(directory) / "sequence.yaml").string());
   }
   // A clock jump is an error; only then are the remaining gaps drop-outs.
   checkClocksAgree(camera_files_, camera_times, lidar_files_, lidar_times);
@@ -73,8 +75,13 @@ std::optional<SensorData> SequenceReader::next() {
   const bool camera_left = next_camera_ < camera_files_.size();
   const bool lidar_left = next_lidar_ < lidar_files_.size();
   if (!camera_left && !lidar_left) return std::nullopt;
-  if (lidar_left && (!camera_left || lidar_files_[next_lidar_].t <= camera_files_[next_camera_].t))
-    return loadScan(next_lidar_++);
+  if (lidar_left && (!camera_left || lidar_files_[next_lidar_].t <= camera_files_[next_camera_].t)) {
+    LidarScan scan = loadScan(next_lidar_++);
+    // After the first scan read, so that a bad first scan is one error line.
+    for (const std::string& warning : field_warnings_) spdlog::warn("{}", warning);
+    field_warnings_.clear();
+    return scan;
+  }
   return loadImage(next_camera_++);
 }
 

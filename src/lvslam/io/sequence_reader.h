@@ -47,6 +47,7 @@ class SequenceReader : public SensorSource {
   std::vector<TimedFile> camera_files_;
   std::vector<TimedFile> lidar_files_;
   std::optional<ScanLayout> layout_;
+  std::vector<std::string> field_warnings_;  // point_fields that lose quality, said once a scan is read
   std::size_t next_camera_ = 0, next_lidar_ = 0;
 };
 
