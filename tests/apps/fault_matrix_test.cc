@@ -363,6 +363,21 @@ TEST(FaultMatrix, AMisspeltPointFieldIsWarnedAboutOnce) {
   EXPECT_NE(r.err.find("no per-point 'time'"), std::string::npos) << r.err;
 }
 
+TEST(FaultMatrix, ImplausibleFocalLengthsAreWarnedAbout) {
+  for (const char* fx : {"1e-9", "1e300"}) {
+    TempDir dir;
+    cleanSequence(dir);
+    std::string yaml = slurpBinary(dir.file("seq/sequence.yaml"));
+    yaml.replace(yaml.find("617.971"), 7, fx);
+    dir.write("seq/sequence.yaml", yaml);
+    const RunResult r = runLvslam(dir, "run --sequence seq --mode lidar --out out");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("seq/sequence.yaml: key 'camera.intrinsics': fx = "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("implausible"), std::string::npos) << r.err;
+  }
+}
+
 TEST(FaultMatrix, FolderGivenAsTheEstimateIsNamedAsSuch) {
   TempDir dir;
   cleanSequence(dir);

@@ -10,6 +10,7 @@
 #include "lvslam/io/atomic_folder.h"
 #include "lvslam/io/clock_check.h"
 #include "lvslam/io/image_file.h"
+#include "lvslam/io/intrinsics_check.h"
 #include "lvslam/io/point_field_check.h"
 #include "lvslam/io/tum.h"
 
@@ -42,11 +43,16 @@ SequenceReader::SequenceReader(const std::string& directory) : directory_(direct
     throw Error(marker, "the folder is incomplete: the conversion that wrote it did not finish");
   const std::string camera_times = (fs::path(directory) / "camera" / "times.txt").string();
   const std::string lidar_times = (fs::path(directory) / "lidar" / "times.txt").string();
-  if (info_.camera) camera_files_ = readTimesFile(camera_times);
+  if (info_.camera) {
+    camera_files_ = readTimesFile(camera_times);
+    plausibility_warnings_ = intrinsicsWarnings(info_.camera->camera, (fs::path(directory) / "sequence.yaml").string());
+  }
   if (info_.lidar) {
     lidar_files_ = readTimesFile(lidar_times);
     layout_ = ScanLayout::fromFields(info_.lidar->point_fields);
-    field_warnings_ = pointFieldWarnings(info_.lidar->point_fields, (fs::path(directory) / "sequence.yaml").string());
+    for (std::string& warning :
+         pointFieldWarnings(info_.lidar->point_fields, (fs::path(directory) / "sequence.yaml").string()))
+      plausibility_warnings_.push_back(std::move(warning));
   }
   // A clock jump is an error; only then are the remaining gaps drop-outs.
   checkClocksAgree(camera_files_, camera_times, lidar_files_, lidar_times);
@@ -75,14 +81,13 @@ std::optional<SensorData> SequenceReader::next() {
   const bool camera_left = next_camera_ < camera_files_.size();
   const bool lidar_left = next_lidar_ < lidar_files_.size();
   if (!camera_left && !lidar_left) return std::nullopt;
-  if (lidar_left && (!camera_left || lidar_files_[next_lidar_].t <= camera_files_[next_camera_].t)) {
-    LidarScan scan = loadScan(next_lidar_++);
-    // After the first scan read, so that a bad first scan is one error line.
-    for (const std::string& warning : field_warnings_) spdlog::warn("{}", warning);
-    field_warnings_.clear();
-    return scan;
-  }
-  return loadImage(next_camera_++);
+  SensorData data = lidar_left && (!camera_left || lidar_files_[next_lidar_].t <= camera_files_[next_camera_].t)
+                        ? SensorData(loadScan(next_lidar_++))
+                        : SensorData(loadImage(next_camera_++));
+  // After the first file read, so that a bad first file is one error line.
+  for (const std::string& warning : plausibility_warnings_) spdlog::warn("{}", warning);
+  plausibility_warnings_.clear();
+  return data;
 }
 
 ImageFrame SequenceReader::loadImage(std::size_t index) const {

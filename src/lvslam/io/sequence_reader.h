@@ -47,7 +47,9 @@ class SequenceReader : public SensorSource {
   std::vector<TimedFile> camera_files_;
   std::vector<TimedFile> lidar_files_;
   std::optional<ScanLayout> layout_;
-  std::vector<std::string> field_warnings_;  // point_fields that lose quality, said once a scan is read
+  // Values that read but lose quality (point_fields, intrinsics), said once
+  // the first file has been read.
+  std::vector<std::string> plausibility_warnings_;
   std::size_t next_camera_ = 0, next_lidar_ = 0;
 };
 
