@@ -28,6 +28,8 @@
 #include "lvslam/core/yaml_config.h"
 #include "lvslam/sim/families.h"
 #include "lvslam/sim/simulate_sequence.h"
+#include "lvslam/report/bench_report_page.h"
+#include "lvslam/system/bench_json.h"
 #include "lvslam/system/bench_table.h"
 
 namespace lvslam::apps {
@@ -255,6 +257,19 @@ int publish(const BenchArgs& args, const std::string& text) {
   return 0;
 }
 
+// bench.html beside the markdown (in the work folder with --no-doc): the
+// tables with bars per mode.
+void writeBenchPage(const BenchArgs& args, const std::string& command, const std::vector<std::string>& groups) {
+  const fs::path path = (args.no_doc ? fs::path(args.work_dir) : fs::path(args.doc_path).parent_path()) / "bench.html";
+  std::string looked_in;
+  if (const std::optional<report::ReportAssets> assets = report::loadReportAssets(&looked_in)) {
+    report::writeBenchReport(path.string(), command, groups, *assets);
+    std::cout << "wrote " << path.string() << "\n";
+  } else {
+    std::cout << report::missingAssetsWarning(path.string(), looked_in);
+  }
+}
+
 int runClassic(const BenchArgs& args, const std::string& command) {
   if (!args.families.empty()) throw Error("--families", "only with --suite families");
   if (args.quick) throw Error("--quick", "only with --suite families");
@@ -281,7 +296,9 @@ int runClassic(const BenchArgs& args, const std::string& command) {
       if (daylight_names.count(row.sequence)) daylight.push_back(row);
     rows.push_back(system::meanRow(daylight, names, fmt::format("mean, room/hall/gate x seeds 1-{}", args.seeds)));
   }
-  return publish(args, report(rows, names, command, args.duration));
+  const int code = publish(args, report(rows, names, command, args.duration));
+  writeBenchPage(args, command, {system::benchGroupJson("classic suite", "", rows, names)});
+  return code;
 }
 
 std::string weakerSensorText(sim::WeakerSensor weaker) {
@@ -372,7 +389,12 @@ int runFamilies(const BenchArgs& args, const std::string& command) {
   std::vector<FamilyResult> results;
   for (const sim::FamilyInfo& family : chosenFamilies(args.families))
     results.push_back(runFamily(family, seeds, duration, cols, config, fs::path(args.work_dir)));
-  return publish(args, familiesReport(results, columnNames(cols), command, duration, seeds));
+  const int code = publish(args, familiesReport(results, columnNames(cols), command, duration, seeds));
+  std::vector<std::string> groups;
+  for (const FamilyResult& r : results)
+    groups.push_back(system::benchGroupJson(familyHeading(r.info), sentence(r.info.purpose), r.rows, columnNames(cols)));
+  writeBenchPage(args, command, groups);
+  return code;
 }
 
 // The command as the report quotes it (options that change the figures).
@@ -393,7 +415,7 @@ std::string quotedCommand(const BenchArgs& args) {
 void addBenchCommand(CLI::App& app, CommandAction& action) {
   CLI::App* cmd = app.add_subcommand(
       "bench", "Run a simulated suite in the modes lidar, visual, fused and the fused ablations; print the tables and "
-               "write them into docs/benchmarks.md. --suite classic (the default): room, hall, gate, gate at night, "
+               "write them into docs/benchmarks.md and bench.html beside it (bars per mode). --suite classic (the default): room, hall, gate, gate at night, "
                "room with a camera blackout and any sequence folders given, in the paper's tables. --suite families: "
                "the scenario families (lvslam simulate --family) with seeds 1..N, a table per family and a summary "
                "of whether fused beats the better single mode");

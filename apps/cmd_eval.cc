@@ -12,6 +12,7 @@
 #include "lvslam/eval/sensor_frame.h"
 #include "lvslam/io/groundtruth_reference.h"
 #include "lvslam/io/tum.h"
+#include "lvslam/report/eval_report_page.h"
 
 namespace lvslam::apps {
 
@@ -31,6 +32,7 @@ struct EvalArgs {
   std::string rpe_pairs_on = "est";
   eval::EvalOptions options;
   bool json = false;
+  std::string report_path;  // --report FILE.html
 };
 
 Trajectory readTrajectory(const std::string& path, const std::string& format,
@@ -64,31 +66,44 @@ GroundTruthReference groundTruthFor(const EvalArgs& args) {
   return ref;
 }
 
-// The estimate in the ground truth's frame (lvslam run's own rule); one
-// warning line when the frames cannot be told.
-Trajectory estimateInGroundTruthFrame(const EvalArgs& args, const GroundTruthReference& ref, const Trajectory& est) {
+// The estimate in the ground truth's frame (lvslam run's own rule); when the
+// frames cannot be told, as it is, with `warning` set (printed once the
+// evaluation has succeeded, so that a failing one stays one error line).
+Trajectory estimateInGroundTruthFrame(const EvalArgs& args, const GroundTruthReference& ref, const Trajectory& est,
+                                      std::string& warning) {
   // Without a word the estimate is what `lvslam run` writes: camera poses.
   const GroundTruthFrame est_frame =
       args.est_frame.empty() ? ref.run_output_frame.value_or(GroundTruthFrame::kCamera) : parseFrame(args.est_frame);
   if (!ref.frame) {
-    std::cerr << "lvslam: warning: " << ref.path << ": its sensor frame cannot be told (give --sequence, or "
-              << "--gt-frame with --extrinsic): compared with the estimate as it is\n";
+    warning = "lvslam: warning: " + ref.path + ": its sensor frame cannot be told (give --sequence, or "
+              "--gt-frame with --extrinsic): compared with the estimate as it is\n";
     return est;
   }
   if (*ref.frame == est_frame) return est;
   if (!ref.T_camera_lidar)
     throw Error("--extrinsic", "needed: the estimate and the ground truth are of different sensors");
-  return eval::inGroundTruthFrame(est, sensorFrame(est_frame), sensorFrame(*ref.frame), *ref.T_camera_lidar);
+  return eval::inSensorFrame(est, sensorFrame(est_frame), sensorFrame(*ref.frame), *ref.T_camera_lidar);
+}
+
+// --report needs the page's assets: checked before any work.
+std::optional<report::ReportAssets> reportAssets(const EvalArgs& args) {
+  if (args.report_path.empty()) return std::nullopt;
+  std::string looked_in;
+  std::optional<report::ReportAssets> assets = report::loadReportAssets(&looked_in);
+  if (!assets) throw Error(args.report_path, "not written: " + report::missingAssetsReason(looked_in));
+  return assets;
 }
 
 int runEval(const EvalArgs& args) {
+  const std::optional<report::ReportAssets> assets = reportAssets(args);
   if (args.format == "tum" && !(args.times_path.empty() && args.gt_times_path.empty()))
     throw Error("lvslam eval", "--times and --gt-times apply to --format kitti only");
   if (args.sequence_dir.empty() == args.gt_path.empty())
     throw Error("lvslam eval", "give either --gt or --sequence");
   const GroundTruthReference ref = groundTruthFor(args);
+  std::string frame_warning;
   const Trajectory est =
-      estimateInGroundTruthFrame(args, ref, readTrajectory(args.est_path, args.format, args.times_path));
+      estimateInGroundTruthFrame(args, ref, readTrajectory(args.est_path, args.format, args.times_path), frame_warning);
   eval::EvalOptions options = args.options;
   // The option checks already limited these strings to the listed names.
   const std::string align = toLower(args.align);
@@ -100,7 +115,12 @@ int runEval(const EvalArgs& args) {
   options.gt_name = ref.path;
   options.est_name = args.est_path;
   const eval::EvalResult result = eval::evaluate(ref.trajectory, est, options);
+  std::cerr << frame_warning;
   std::cout << (args.json ? eval::formatJson(result) + "\n" : eval::formatSummary(result));
+  if (assets) {
+    report::writeEvalReport(args.report_path, ref.trajectory, ref.path, est, args.est_path, options.alignment, *assets);
+    if (!args.json) std::cout << "wrote " << args.report_path << "\n";
+  }
   return 0;
 }
 
@@ -156,6 +176,9 @@ void addEvalCommand(CLI::App& app, CommandAction& action) {
       ->check(CLI::IsMember({"est", "gt"}, CLI::ignore_case))
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print one JSON object instead of the summary");
+  cmd->add_option("--report", args->report_path,
+                  "Also write this self-contained HTML page: both trajectories from above and from the side, ATE "
+                  "and RPE (1 m, 10 m) over time and their statistics");
   cmd->callback([&action, args] { action = [args] { return runEval(*args); }; });
 }
 

@@ -1,8 +1,9 @@
 // `lvslam run`: the system over a recording (a sequence folder, or ROS1 bags
 // with a sensor preset) in mode fused, lidar or visual; writes OUT/
-// trajectory.tum, stats.json, map.ply and lines.ply and, when there is
-// ground truth, prints the accuracy.
+// trajectory.tum, stats.json, map.ply, lines.ply and report.html and, when
+// there is ground truth, groundtruth.tum and prints the accuracy.
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -14,10 +15,13 @@
 
 #include "command.h"
 #include "progress_line.h"
+#include "report_html.h"
 #include "lvslam/core/yaml_config.h"
 #include "lvslam/eval/eval_report.h"
 #include "lvslam/io/recording.h"
+#include "lvslam/io/tum.h"
 #include "lvslam/sim/simulate_sequence.h"
+#include "lvslam/system/ground_truth_export.h"
 #include "lvslam/system/run_recording.h"
 #include "lvslam/system/output_folder.h"
 
@@ -110,6 +114,12 @@ int runRun(RunArgs args) {
   if (run.accuracy) std::cout << "online (trajectory.tum):\n" << eval::formatSummary(*run.accuracy);
   if (run.accuracy_refined)
     std::cout << "offline refinement (trajectory_refined.tum):\n" << eval::formatSummary(*run.accuracy_refined);
+  // No stale file from an earlier run into the same folder may reach the report.
+  if (const std::optional<Trajectory> gt = system::groundTruthInOutputFrame(recording, run.output))
+    writeTum(args.out_dir + "/groundtruth.tum", *gt);
+  else
+    std::filesystem::remove(args.out_dir + "/groundtruth.tum");
+  writeRunReportOrWarn(args.out_dir);
   return 0;
 }
 
@@ -119,7 +129,8 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
   CLI::App* cmd = app.add_subcommand(
       "run", "Run SLAM over a sequence folder or ROS1 bags; writes OUT/trajectory.tum (the online output, each "
              "pose from the data up to its frame), trajectory_refined.tum (the offline refinement), stats.json, "
-             "map.ply and lines.ply, and prints the accuracy of both when there is ground truth. Without --sequence "
+             "map.ply, lines.ply and report.html (one self-contained page of all of it; groundtruth.tum beside it "
+             "when there is ground truth), and prints the accuracy of both when there is ground truth. Without --sequence "
              "or --bag it runs on the built-in default, a simulated room sequence generated once into "
              "out/default-room.");
   auto args = std::make_shared<RunArgs>();

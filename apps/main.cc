@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   lvslam::apps::addRunCommand(app, action);
   lvslam::apps::addOverlayCommand(app, action);
   lvslam::apps::addBenchCommand(app, action);
+  lvslam::apps::addReportCommand(app, action);
 
   try {
     app.parse(argc, argv);

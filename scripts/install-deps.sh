@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages lvslam builds against, only those missing.
-# Idempotent and non-interactive; uses sudo when not run as root.
+# Installs the Debian 12 packages lvslam builds against, only those missing,
+# then the report's pinned JavaScript libraries (npm ci in web/, from its
+# package-lock.json). Idempotent and non-interactive; uses sudo when not run
+# as root.
 set -euo pipefail
+cd "$(dirname "$0")/.."
 
 packages=(
   cmake g++ make ccache pkg-config
@@ -13,7 +16,12 @@ packages=(
   librosbag-storage-dev librcpputils-dev librcutils-dev libament-index-cpp-dev
   libsensor-msgs-dev pluginlib-dev libclass-loader-dev
   libroscpp-core-dev libroslz4-dev libbz2-dev libconsole-bridge-dev
+  # HTML reports: the test opens them in headless Chromium
+  chromium
 )
+# Node and npm for the report's libraries, unless a node is already there
+# (Debian's npm would not install beside another vendor's nodejs).
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -21,12 +29,20 @@ for p in "${packages[@]}"; do
 done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-sudo_cmd=()
-if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# The lock file pins every version; npm ci installs exactly those, and only
+# when node_modules is older than the lock file.
+if [ ! -f web/node_modules/.package-lock.json ] || [ web/package-lock.json -nt web/node_modules/.package-lock.json ]; then
+  echo "install-deps: npm ci in web/ (three.js, Chart.js, puppeteer-core)"
+  (cd web && npm ci --no-audit --no-fund --loglevel=error)
+else
+  echo "install-deps: web/node_modules up to date"
+fi

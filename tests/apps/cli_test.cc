@@ -111,6 +111,107 @@ TEST(Cli, AllNanScansAreSurvivedAndReported) {
   EXPECT_NE(r.out.find("lost"), std::string::npos) << r.out;
 }
 
+// A report needs the run's stats.json whole: a missing or truncated one is one
+// line naming it, exit 2, and no page.
+TEST(Cli, ReportOfAFolderWithoutStatsNamesStatsJson) {
+  TempDir dir;
+  dir.write("run/trajectory.tum", "0 0 0 0 0 0 0 1\n");
+  const RunResult r = runLvslam(dir, "report run");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("stats.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "run" / "report.html"));
+}
+
+TEST(Cli, ReportOfATruncatedStatsJsonNamesItAndTheByte) {
+  TempDir dir;
+  dir.write("run/trajectory.tum", "0 0 0 0 0 0 0 1\n");
+  dir.write("run/stats.json", "{\"summary\": {\"mode\": \"lidar\", \"images\": 0},\n\"frames\": [\n  {\"t\": 0.1, \"so");
+  const RunResult r = runLvslam(dir, "report run");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("stats.json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "run" / "report.html"));
+}
+
+// A straight line along x with a gentle curve: enough path for RPE at 1 m.
+std::string tumPath(double offset_y) {
+  std::string text;
+  for (int i = 0; i < 60; ++i)
+    text += std::to_string(0.1 * i) + " " + std::to_string(0.1 * i) + " " + std::to_string(offset_y + 0.002 * i * i) +
+            " 0 0 0 0 1\n";
+  return text;
+}
+
+TEST(Cli, ReportOfARunFolderHoldsItsData) {
+  TempDir dir;
+  dir.write("run/stats.json",
+            "{\"summary\": {\"mode\": \"lidar\", \"images\": 0, \"scans\": 1, \"switches\": 0},\n"
+            "\"switches\": [], \"frames\": [], \"scans\": [{\"t\": 0.0, \"status\": \"tracking\", \"features\": 7}]}\n");
+  dir.write("run/trajectory.tum", tumPath(0.25));
+  dir.write("run/groundtruth.tum", tumPath(0.0));
+  const RunResult r = runLvslam(dir, "report run");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(dir.file("run/report.html"));
+  const std::string html{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_NE(html.find("\"kind\": \"run\""), std::string::npos);
+  EXPECT_NE(html.find("\"status\": \"tracking\""), std::string::npos) << "stats.json inlined";
+  EXPECT_NE(html.find("\"name\": \"ATE (se3 aligned)\""), std::string::npos);
+  EXPECT_NE(html.find("\"p\": [0,0.25,0,0.1,0.25"), std::string::npos) << "the trajectory as written";
+  EXPECT_EQ(html.find("src=\"http"), std::string::npos) << "nothing loaded from the network";
+}
+
+TEST(Cli, EvalReportHoldsBothTrajectoriesAndTheirErrors) {
+  TempDir dir;
+  dir.write("gt.txt", tumPath(0.0));
+  dir.write("est.txt", tumPath(0.5));
+  const RunResult r = runLvslam(dir, "eval --gt gt.txt --est est.txt --report page.html");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(dir.file("page.html"));
+  const std::string html{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_NE(html.find("\"kind\": \"eval\""), std::string::npos);
+  EXPECT_NE(html.find("\"name\": \"gt.txt\""), std::string::npos);
+  EXPECT_NE(html.find("\"name\": \"est.txt\""), std::string::npos);
+  EXPECT_NE(html.find("\"name\": \"RPE 1 m, translation\""), std::string::npos);
+  // The estimate is the ground truth moved by 0.5 m: aligned, its ATE is zero.
+  const std::size_t at = html.find("\"ATE (se3 aligned)\"");
+  ASSERT_NE(at, std::string::npos);
+  const std::string series = html.substr(at, 4000);
+  std::smatch ate;
+  ASSERT_TRUE(std::regex_search(series, ate, std::regex(R"("stats": \{"count": 60, "rmse": ([-0-9.e]+),)"))) << series;
+  EXPECT_LT(std::stod(ate[1]), 1e-9);
+}
+
+TEST(Cli, EvalReportOfTrajectoriesThatDoNotMeetIsOneLine) {
+  TempDir dir;
+  dir.write("gt.txt", tumPath(0.0));
+  dir.write("est.txt", "100 0 0 0 0 0 0 1\n101 1 0 0 0 0 0 1\n");
+  const RunResult r = runLvslam(dir, "eval --gt gt.txt --est est.txt --report page.html");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("gt.txt"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "page.html"));
+}
+
+// Without the JavaScript assets a run still succeeds and says, in one line,
+// that report.html was not written and how to install them.
+TEST(Cli, RunWithoutReportAssetsWarnsInOneLine) {
+  TempDir dir;
+  dir.write("seq/sequence.yaml", "format: lvslam-sequence/1\nlidar:\n  point_fields: [x, y, z]\n");
+  dir.write("seq/lidar/a.bin", std::string(12 * 10, '\0'));
+  dir.write("seq/lidar/b.bin", std::string(12 * 10, '\0'));
+  dir.write("seq/lidar/times.txt", "0.0 a.bin\n0.1 b.bin\n");
+  dir.write("out/report.html", "an earlier run's page");
+  ::setenv("LVSLAM_REPORT_ASSETS", dir.file("nowhere").c_str(), 1);
+  const RunResult r = runLvslam(dir, "run --sequence seq --out out");
+  ::unsetenv("LVSLAM_REPORT_ASSETS");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const std::regex warning(R"((^|\n)warning: out/report.html not written: .*nowhere.*install-deps.sh[^\n]*\n)");
+  EXPECT_TRUE(std::regex_search(r.err, warning)) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "report.html"));
+}
+
 TEST(Cli, BenchFamiliesOptionsAreCheckedBeforeAnyRun) {
   TempDir dir;
   const RunResult unknown = runLvslam(dir, "bench --suite families --families room,moon --no-doc");
@@ -143,6 +244,10 @@ TEST(Cli, BenchFamiliesQuickRunsOneFamilyEndToEnd) {
   const std::string text{std::istreambuf_iterator<char>(doc), std::istreambuf_iterator<char>()};
   EXPECT_EQ(text.rfind("# Benchmarks\n\nhand-written\n", 0), 0u) << text;
   EXPECT_NE(text.find("#### room: both sensors good"), std::string::npos) << text;
+  std::ifstream page(dir.file("bench.html"));  // beside the document
+  const std::string html{std::istreambuf_iterator<char>(page), std::istreambuf_iterator<char>()};
+  EXPECT_NE(html.find("\"name\": \"room: both sensors good\""), std::string::npos);
+  EXPECT_NE(html.find("\"columns\": [\"lidar\",\"visual\",\"fused\"]"), std::string::npos) << html.substr(0, 300);
 }
 
 }  // namespace

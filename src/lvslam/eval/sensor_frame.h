@@ -2,7 +2,8 @@
 // Like with like: an estimate and a ground truth of a rig compare only in the
 // same sensor frame. World alignment cannot absorb the camera-LiDAR lever
 // arm, so an estimate of the camera against a LiDAR ground truth (or the
-// reverse) is moved into the ground truth's frame first. `lvslam run`,
+// reverse) is moved into the ground truth's frame first (or the ground truth
+// into the estimate's, for export). `lvslam run`,
 // `bench` and `eval` all call this.
 #include <Eigen/Geometry>
 
@@ -12,9 +13,11 @@ namespace lvslam::eval {
 
 enum class SensorFrame { kCamera, kLidar };
 
-// The estimate's poses T_world_<est_frame> as T_world_<gt_frame>, through
-// T_camera_lidar; unchanged when both frames are the same.
-Trajectory inGroundTruthFrame(const Trajectory& estimate, SensorFrame est_frame, SensorFrame gt_frame,
-                              const Eigen::Isometry3d& T_camera_lidar);
+inline SensorFrame sensorFrameOf(bool is_camera) { return is_camera ? SensorFrame::kCamera : SensorFrame::kLidar; }
+
+// Poses T_world_<from> as T_world_<to>, through T_camera_lidar; unchanged
+// when both frames are the same.
+Trajectory inSensorFrame(const Trajectory& trajectory, SensorFrame from, SensorFrame to,
+                         const Eigen::Isometry3d& T_camera_lidar);
 
 }  // namespace lvslam::eval

@@ -46,7 +46,8 @@ std::map<std::string, FieldTable> fieldTables(LidarOdometryConfig& c) {
         {"min_inlier_ratio", &r.min_inlier_ratio}, {"restart_after_lost", &r.restart_after_lost},
         {"max_correction_translation", &r.max_correction_translation},
         {"max_correction_rotation_deg", &r.max_correction_rotation_deg}, {"vertex_weight", &r.vertex_weight}, {"beam_weight", &r.beam_weight},
-        {"max_normal_angle_deg", &r.max_normal_angle_deg}}},
+        {"max_normal_angle_deg", &r.max_normal_angle_deg}, {"range_sigma", &r.range_sigma},
+        {"beam_divergence", &r.beam_divergence}}},
       {"local_map",
        {{"voxel_size", &m.voxel_size}, {"max_points_per_voxel", &m.max_points_per_voxel},
         {"radius", &m.radius}, {"max_frame_age", &m.max_frame_age},
@@ -118,6 +119,8 @@ void validate(const LidarOdometryConfig& c, const std::string& where) {
           k + "registration.reassociate_motion': must not be negative");
   require(c.registration.min_threshold > 0 && c.registration.min_threshold <= c.registration.max_threshold,
           where, k + "registration': need 0 < min_threshold <= max_threshold");
+  require(c.registration.range_sigma > 0 && c.registration.beam_divergence >= 0, where,
+          k + "registration': need range_sigma > 0 and beam_divergence >= 0");
   require(c.registration.restart_after_lost >= 0, where,
           k + "registration.restart_after_lost': must not be negative (0: never)");
   require(c.local_map.voxel_size > 0 && c.local_map.max_points_per_voxel > 0 && c.local_map.radius > 0 &&

@@ -75,6 +75,11 @@ struct RegistrationConfig {
   // of the view (their eigenvalues say linear); they get a small say.
   double beam_weight = 0.0;
   double max_normal_angle_deg = 30.0;  // source and map directions must agree this well
+  // The sensor's own noise, which weighs each correspondence: a return's
+  // position is uncertain by its range noise and by where in the beam's
+  // footprint (full angle beam_divergence) the echo came from.
+  double range_sigma = 0.02;         // metres (VLP-32C: +-3 cm accuracy)
+  double beam_divergence = 0.003;    // radians, full angle (VLP-32C and VLP-16: 3 mrad)
 };
 
 struct LocalMapConfig {

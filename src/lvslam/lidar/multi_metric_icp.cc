@@ -29,17 +29,26 @@ NormalEquations& operator+=(NormalEquations& a, const NormalEquations& b) {
 template <int Rows>
 void addResidual(NormalEquations& eq, const Eigen::Matrix<double, Rows, 3>& A, const Eigen::Vector3d& q,
                  const Eigen::Matrix<double, 3, 6>& dq, const Eigen::Vector3d& m, double kernel,
-                 double class_weight) {
+                 double weight, double noise_weight) {
   const Eigen::Matrix<double, Rows, 1> r = A * (q - m);
   const Eigen::Matrix<double, Rows, 6> J = A * dq;
   // Geman-McClure weight, (k^2 / (k^2 + r^2))^2 (MULLS; kiss-icp's differs, k^2 / (k + r^2)^2).
   const double r_sq = r.squaredNorm();
   const double k_sq = kernel * kernel;
-  const double w = class_weight * (k_sq / (k_sq + r_sq)) * (k_sq / (k_sq + r_sq));
+  const double w = weight * (k_sq / (k_sq + r_sq)) * (k_sq / (k_sq + r_sq));
   eq.H.noalias() += w * J.transpose() * J;
   eq.b.noalias() += w * J.transpose() * r;
-  eq.squared_error += r_sq;
+  eq.squared_error += noise_weight * r_sq;  // the variance of a return of weight 1 (weighted least squares)
   ++eq.count;
+}
+
+// A return's position noise relative to the best one's: range noise plus the
+// spread of where in the footprint the echo came from (a disk of radius
+// r theta / 2, whose points have a standard deviation of r theta / 4 per axis).
+double footprintWeight(const Eigen::Vector3d& p_sensor, const RegistrationConfig& config) {
+  const double s0 = config.range_sigma * config.range_sigma;
+  const double spread = p_sensor.norm() * config.beam_divergence / 4.0;
+  return s0 / (s0 + spread * spread);
 }
 
 // Nearest map point of the same class within the threshold, or nullptr.
@@ -62,16 +71,19 @@ void addCorrespondence(NormalEquations& eq, const FeaturePoint& fp, const MapPoi
   if (fp.cls != FeatureClass::kVertex && std::abs(source_direction.dot(m->direction.cast<double>())) < min_cos) return;
   Eigen::Matrix<double, 3, 6> dq;
   dq << T.linear(), -T.linear() * skew(p);
+  const double noise_weight = footprintWeight(p, config);
   if (isPlanar(fp.cls)) {
-    addResidual<1>(eq, m->direction.cast<double>().transpose(), q, dq, mp, kernel, 1.0);
+    addResidual<1>(eq, m->direction.cast<double>().transpose(), q, dq, mp, kernel, noise_weight, noise_weight);
   } else if (isLinear(fp.cls)) {
     // A fusion-refined direction (paper: d_v_mean) is preferred to a raw PCA one.
     const bool use_source = fp.refined && !m->refined;
     const Eigen::Vector3d d = use_source ? source_direction : Eigen::Vector3d(m->direction.cast<double>());
     const Eigen::Matrix3d A = Eigen::Matrix3d::Identity() - d * d.transpose();
-    addResidual<3>(eq, A, q, dq, mp, kernel, fp.cls == FeatureClass::kBeam ? config.beam_weight : 1.0);
+    addResidual<3>(eq, A, q, dq, mp, kernel,
+                   noise_weight * (fp.cls == FeatureClass::kBeam ? config.beam_weight : 1.0), noise_weight);
   } else {
-    addResidual<3>(eq, Eigen::Matrix3d::Identity(), q, dq, mp, kernel, config.vertex_weight);
+    addResidual<3>(eq, Eigen::Matrix3d::Identity(), q, dq, mp, kernel, noise_weight * config.vertex_weight,
+                   noise_weight);
   }
 }
 

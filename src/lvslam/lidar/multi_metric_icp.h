@@ -39,7 +39,7 @@ IcpResult registerMultiMetric(const std::vector<FeaturePoint>& source, const Loc
 struct NormalEquations {
   Matrix6d H = Matrix6d::Zero();
   Vector6d b = Vector6d::Zero();
-  double squared_error = 0.0;
+  double squared_error = 0.0;  // of the residuals, each weighed by its return's noise
   std::size_t count = 0;
 };
 
@@ -50,7 +50,8 @@ Vector6d solveWellConditioned(const NormalEquations& eq, double degeneracy_ratio
                               double& condition);
 
 // H / sigma^2 restricted to the directions solveWellConditioned uses (the
-// others get no information), sigma^2 the mean squared residual.
+// others get no information), sigma^2 the noise-weighted mean squared
+// residual (the variance of a return of weight 1).
 Matrix6d wellConditionedInformation(const NormalEquations& eq, double degeneracy_ratio);
 
 }  // namespace lvslam::lidar

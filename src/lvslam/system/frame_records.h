@@ -3,6 +3,7 @@
 // thread writes only its own records (no sharing); the output is assembled
 // from them in frame order afterwards.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "lvslam/fusion/fusion_framework.h"
+#include "lvslam/lidar/feature_point.h"
 #include "lvslam/visual/tracking/visual_slam.h"
 
 namespace lvslam::system {
@@ -78,6 +80,7 @@ struct ScanRecord {
   double t = 0.0;
   std::string status;
   std::size_t features = 0, correspondences = 0;
+  std::array<std::size_t, lidar::kFeatureClassCount> features_per_class{};  // ground .. vertex
   int iterations = 0;
   double prepare_ms = 0.0, register_ms = 0.0;
 };

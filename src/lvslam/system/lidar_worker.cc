@@ -114,6 +114,8 @@ void LidarWorker::registerPending() {
   record.t = result.timestamp;
   record.status = lidar::statusName(result.status);
   record.features = result.features;
+  for (const lidar::FeaturePoint& point : odometry_.currentFrame().points)
+    ++record.features_per_class[static_cast<std::size_t>(point.cls)];
   record.correspondences = result.correspondences;
   record.iterations = result.iterations;
   record.prepare_ms = pending_prepare_ms_;

@@ -11,9 +11,8 @@ std::optional<eval::EvalResult> evaluateOutput(const Recording& recording, const
   if (!recording.ground_truth || trajectory.size() < eval::kMinAssociatedPairs) return std::nullopt;
   const bool gt_is_camera = recording.ground_truth_frame == GroundTruthFrame::kCamera;
   const Eigen::Isometry3d T_camera_lidar = recording.source->calibration().T_camera_lidar;
-  const auto frame = [](bool camera) { return camera ? eval::SensorFrame::kCamera : eval::SensorFrame::kLidar; };
-  const Trajectory estimate =
-      eval::inGroundTruthFrame(trajectory, frame(output.trajectory_is_camera), frame(gt_is_camera), T_camera_lidar);
+  const Trajectory estimate = eval::inSensorFrame(trajectory, eval::sensorFrameOf(output.trajectory_is_camera),
+                                                  eval::sensorFrameOf(gt_is_camera), T_camera_lidar);
   eval::EvalOptions options;
   options.alignment = output.metric ? eval::Alignment::kSE3 : eval::Alignment::kSim3;
   options.gt_name = recording.ground_truth_path;

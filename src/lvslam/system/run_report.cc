@@ -6,6 +6,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "lvslam/core/error.h"
 #include "lvslam/eval/eval_report.h"
@@ -89,6 +90,7 @@ std::string scanJson(const ScanRecord& s, bool timings) {
   o.addNumber("t", s.t)
       .addString("status", s.status)
       .addCount("features", s.features)
+      .addRaw("features_per_class", fmt::format("[{}]", fmt::join(s.features_per_class, ",")))
       .addCount("correspondences", s.correspondences)
       .addNumber("iterations", s.iterations);
   if (timings) o.addRaw("time_ms", JsonObject().addNumber("prepare", s.prepare_ms).addNumber("register", s.register_ms).str());

@@ -1,0 +1,21 @@
+#include "lvslam/report/bench_report_page.h"
+
+#include "lvslam/eval/json_writer.h"
+#include "lvslam/report/html_page.h"
+
+namespace lvslam::report {
+
+void writeBenchReport(const std::string& path, const std::string& command, const std::vector<std::string>& groups_json,
+                      const ReportAssets& assets) {
+  std::string groups = "[";
+  for (const std::string& group : groups_json) groups += (groups.size() > 1 ? "," : "") + group;
+  const std::string title = "lvslam bench: " + command;
+  const std::string data = eval::JsonObject()
+                               .addString("kind", "bench")
+                               .addString("title", title)
+                               .addRaw("groups", groups + "]")
+                               .str();
+  writeHtmlFile(path, htmlPage(title, data, assets, false));
+}
+
+}  // namespace lvslam::report

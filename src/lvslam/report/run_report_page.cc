@@ -1,0 +1,107 @@
+#include "lvslam/report/run_report_page.h"
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "lvslam/core/error.h"
+#include "lvslam/eval/evaluate.h"
+#include "lvslam/eval/json_writer.h"
+#include "lvslam/io/ply_reader.h"
+#include "lvslam/io/tum.h"
+#include "lvslam/report/html_page.h"
+#include "lvslam/report/json_value.h"
+#include "lvslam/report/report_json.h"
+
+namespace lvslam::report {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// stats.json as text (inlined as it is), after checking that it parses and
+// holds what the page draws.
+std::string readStats(const fs::path& path, JsonValue& stats) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path.string(), "cannot read the file (is this a folder `lvslam run` wrote?)");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  stats = parseJson(text, path.string());
+  for (const char* key : {"summary", "frames", "scans", "switches"})
+    if (!stats.find(key)) throw Error(path.string(), std::string("no \"") + key + "\" field");
+  if (!stats.find("summary")->isObject()) throw Error(path.string(), "\"summary\" is not an object");
+  return text;
+}
+
+// The alignment stats.json's accuracy used (sim3 for a visual run without
+// metric scale), so the page's figures are the run's.
+eval::Alignment alignmentOf(const JsonValue& stats) {
+  const JsonValue* accuracy = stats.find("summary")->find("accuracy");
+  const JsonValue* align = accuracy ? accuracy->find("align") : nullptr;
+  if (align && align->string == "sim3") return eval::Alignment::kSim3;
+  if (align && align->string == "none") return eval::Alignment::kNone;
+  return eval::Alignment::kSE3;
+}
+
+// One trajectory of the run, with its errors when there is ground truth.
+std::string trajectoryEntry(const std::string& name, const Trajectory& est, const std::optional<Trajectory>& gt,
+                            eval::Alignment alignment, const std::string& gt_name) {
+  std::optional<TrajectoryErrors> errors;
+  if (gt && est.size() >= eval::kMinAssociatedPairs) {
+    try {
+      errors = computeTrajectoryErrors(*gt, est, alignment, gt_name, name);
+    } catch (const Error&) {
+      errors.reset();  // too few poses associate: the page shows the trajectory without errors
+    }
+  }
+  eval::JsonObject o;
+  o.addRaw("trajectory", trajectoryJson(name, est));
+  if (errors) o.addRaw("errors", errorsJson(*errors));
+  return o.str();
+}
+
+}  // namespace
+
+RunReportInfo writeRunReport(const std::string& run_dir, const ReportAssets& assets) {
+  const fs::path dir(run_dir);
+  JsonValue stats;
+  const std::string stats_text = readStats(dir / "stats.json", stats);
+  const Trajectory online = readTum((dir / "trajectory.tum").string());
+  std::optional<Trajectory> refined, gt;
+  if (fs::exists(dir / "trajectory_refined.tum")) refined = readTum((dir / "trajectory_refined.tum").string());
+  if (fs::exists(dir / "groundtruth.tum")) gt = readTum((dir / "groundtruth.tum").string());
+  const eval::Alignment alignment = alignmentOf(stats);
+
+  std::string entries = "[";
+  entries += trajectoryEntry("online (trajectory.tum)", online, gt, alignment, "groundtruth.tum");
+  if (refined && !refined->empty()) {
+    entries += ",";
+    entries += trajectoryEntry("refined (trajectory_refined.tum)", *refined, gt, alignment, "groundtruth.tum");
+  }
+  entries += "]";
+
+  RunReportInfo info;
+  eval::JsonObject data;
+  data.addString("kind", "run").addString("title", "lvslam run: " + run_dir).addRaw("stats", stats_text);
+  data.addRaw("estimates", entries);
+  if (gt) data.addRaw("groundtruth", trajectoryJson("ground truth (groundtruth.tum)", *gt, kGroundTruthDisplayPoses));
+  if (fs::exists(dir / "map.ply")) {
+    const std::vector<PlyPoint> map = readPointCloudPly((dir / "map.ply").string());
+    const DecimatedMap shown = decimateMap(map, kMapPointBudget);
+    data.addRaw("map", mapJson(shown, map.size()));
+    info.map_points = map.size();
+    info.map_points_shown = shown.points.size();
+    info.map_voxel_m = shown.voxel_m;
+  }
+  if (fs::exists(dir / "lines.ply")) data.addRaw("lines", linesJson(readLineSegmentsPly((dir / "lines.ply").string())));
+
+  const std::string html = htmlPage("lvslam run: " + run_dir, data.str(), assets);
+  info.path = (dir / "report.html").string();
+  writeHtmlFile(info.path, html);
+  info.bytes = html.size();
+  return info;
+}
+
+}  // namespace lvslam::report
