@@ -9,6 +9,8 @@
 #include "lvslam/core/error.h"
 #include "lvslam/eval/eval_report.h"
 #include "lvslam/eval/evaluate.h"
+#include "lvslam/eval/sensor_frame.h"
+#include "lvslam/io/groundtruth_reference.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/report/eval_report_page.h"
 
@@ -17,6 +19,10 @@ namespace lvslam::apps {
 namespace {
 
 struct EvalArgs {
+  std::string sequence_dir;  // ground truth, its frame and the extrinsic from a sequence folder
+  std::string gt_frame;      // camera | lidar, for --gt
+  std::string est_frame;     // camera | lidar; default: what `lvslam run` writes
+  std::string extrinsic_path;
   std::string gt_path;
   std::string est_path;
   std::string format = "tum";
@@ -40,6 +46,45 @@ std::string toLower(std::string text) {
   return text;
 }
 
+GroundTruthFrame parseFrame(const std::string& name) {
+  return name == "lidar" ? GroundTruthFrame::kLidar : GroundTruthFrame::kCamera;
+}
+
+eval::SensorFrame sensorFrame(GroundTruthFrame frame) {
+  return frame == GroundTruthFrame::kLidar ? eval::SensorFrame::kLidar : eval::SensorFrame::kCamera;
+}
+
+// The ground truth and what is known of its frame: from --sequence, or
+// from --gt with --gt-frame and --extrinsic.
+GroundTruthReference groundTruthFor(const EvalArgs& args) {
+  if (!args.sequence_dir.empty()) return groundTruthOfSequence(args.sequence_dir);
+  GroundTruthReference ref;
+  ref.path = args.gt_path;
+  ref.trajectory = readTrajectory(args.gt_path, args.format, args.gt_times_path.empty() ? args.times_path : args.gt_times_path);
+  if (!args.gt_frame.empty()) ref.frame = parseFrame(args.gt_frame);
+  if (!args.extrinsic_path.empty()) ref.T_camera_lidar = readExtrinsicFile(args.extrinsic_path);
+  return ref;
+}
+
+// The estimate in the ground truth's frame (lvslam run's own rule); when the
+// frames cannot be told, as it is, with `warning` set (printed once the
+// evaluation has succeeded, so that a failing one stays one error line).
+Trajectory estimateInGroundTruthFrame(const EvalArgs& args, const GroundTruthReference& ref, const Trajectory& est,
+                                      std::string& warning) {
+  // Without a word the estimate is what `lvslam run` writes: camera poses.
+  const GroundTruthFrame est_frame =
+      args.est_frame.empty() ? ref.run_output_frame.value_or(GroundTruthFrame::kCamera) : parseFrame(args.est_frame);
+  if (!ref.frame) {
+    warning = "lvslam: warning: " + ref.path + ": its sensor frame cannot be told (give --sequence, or "
+              "--gt-frame with --extrinsic): compared with the estimate as it is\n";
+    return est;
+  }
+  if (*ref.frame == est_frame) return est;
+  if (!ref.T_camera_lidar)
+    throw Error("--extrinsic", "needed: the estimate and the ground truth are of different sensors");
+  return eval::inSensorFrame(est, sensorFrame(est_frame), sensorFrame(*ref.frame), *ref.T_camera_lidar);
+}
+
 // --report needs the page's assets: checked before any work.
 std::optional<report::ReportAssets> reportAssets(const EvalArgs& args) {
   if (args.report_path.empty()) return std::nullopt;
@@ -53,9 +98,12 @@ int runEval(const EvalArgs& args) {
   const std::optional<report::ReportAssets> assets = reportAssets(args);
   if (args.format == "tum" && !(args.times_path.empty() && args.gt_times_path.empty()))
     throw Error("lvslam eval", "--times and --gt-times apply to --format kitti only");
-  const std::string& gt_times = args.gt_times_path.empty() ? args.times_path : args.gt_times_path;
-  const Trajectory gt = readTrajectory(args.gt_path, args.format, gt_times);
-  const Trajectory est = readTrajectory(args.est_path, args.format, args.times_path);
+  if (args.sequence_dir.empty() == args.gt_path.empty())
+    throw Error("lvslam eval", "give either --gt or --sequence");
+  const GroundTruthReference ref = groundTruthFor(args);
+  std::string frame_warning;
+  const Trajectory est =
+      estimateInGroundTruthFrame(args, ref, readTrajectory(args.est_path, args.format, args.times_path), frame_warning);
   eval::EvalOptions options = args.options;
   // The option checks already limited these strings to the listed names.
   const std::string align = toLower(args.align);
@@ -64,12 +112,13 @@ int runEval(const EvalArgs& args) {
                                         : eval::Alignment::kSE3;
   options.rpe_pairs_on =
       toLower(args.rpe_pairs_on) == "gt" ? eval::RpePairsOn::kGroundTruth : eval::RpePairsOn::kEstimate;
-  options.gt_name = args.gt_path;
+  options.gt_name = ref.path;
   options.est_name = args.est_path;
-  const eval::EvalResult result = eval::evaluate(gt, est, options);
+  const eval::EvalResult result = eval::evaluate(ref.trajectory, est, options);
+  std::cerr << frame_warning;
   std::cout << (args.json ? eval::formatJson(result) + "\n" : eval::formatSummary(result));
   if (assets) {
-    report::writeEvalReport(args.report_path, gt, args.gt_path, est, args.est_path, options.alignment, *assets);
+    report::writeEvalReport(args.report_path, ref.trajectory, ref.path, est, args.est_path, options.alignment, *assets);
     if (!args.json) std::cout << "wrote " << args.report_path << "\n";
   }
   return 0;
@@ -85,7 +134,21 @@ void addEvalCommand(CLI::App& app, CommandAction& action) {
       "length, not aligned) and the KITTI odometry metric.");
   // The arguments outlive parsing: the action runs after app.parse returns.
   auto args = std::make_shared<EvalArgs>();
-  cmd->add_option("--gt", args->gt_path, "Ground-truth trajectory file")->required();
+  auto* gt = cmd->add_option("--gt", args->gt_path, "Ground-truth trajectory file");
+  auto* sequence = cmd->add_option("--sequence", args->sequence_dir,
+                                   "Sequence folder: its groundtruth.txt, in the frame its sequence.yaml names "
+                                   "(groundtruth.frame), the estimate moved into that frame by its extrinsic");
+  sequence->excludes(gt);
+  auto* gt_frame = cmd->add_option("--gt-frame", args->gt_frame, "Sensor frame of --gt: camera or lidar")
+                       ->check(CLI::IsMember({"camera", "lidar"}));
+  cmd->add_option("--est-frame", args->est_frame,
+                  "Sensor frame of the estimate: camera or lidar (default with --sequence: what lvslam run writes, "
+                  "the camera's when the sequence has one)")
+      ->check(CLI::IsMember({"camera", "lidar"}));
+  auto* extrinsic = cmd->add_option("--extrinsic", args->extrinsic_path,
+                                    "T_camera_lidar for --gt: a sequence.yaml or a YAML with T_camera_lidar");
+  gt_frame->excludes(sequence);
+  extrinsic->excludes(sequence);
   cmd->add_option("--est", args->est_path, "Estimated trajectory file")->required();
   cmd->add_option("--align", args->align,
                   "Umeyama alignment of the estimate before ATE: se3 (rotation and translation), "

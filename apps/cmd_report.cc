@@ -20,7 +20,7 @@ void writeRunReportOrWarn(const std::string& run_dir) {
   const std::optional<report::ReportAssets> assets = report::loadReportAssets(&looked_in);
   if (!assets) {
     std::filesystem::remove(run_dir + "/report.html");  // an earlier run's page would mislead
-    std::cout << report::missingAssetsWarning(run_dir + "/report.html", looked_in);
+    std::cerr << report::missingAssetsWarning(run_dir + "/report.html", looked_in);  // warnings on stderr
     return;
   }
   const auto start = std::chrono::steady_clock::now();

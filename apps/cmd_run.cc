@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@
 #include "lvslam/sim/simulate_sequence.h"
 #include "lvslam/system/ground_truth_export.h"
 #include "lvslam/system/run_recording.h"
+#include "lvslam/system/output_folder.h"
 
 namespace lvslam::apps {
 
@@ -39,11 +41,22 @@ struct RunArgs {
 };
 
 // Without --mode the system runs what the recording allows: fused with both
-// sensors, else the one subsystem its sensor feeds.
+// sensors, else the one subsystem its sensor feeds. A sensor without data
+// counts as absent: `--mode fused` then runs the other sensor's mode with a
+// warning; a mode whose only sensor has no data has no result (exit 1).
 std::string modeFor(const RunArgs& args, const SensorSource& source) {
-  if (args.mode_given || (source.hasCamera() && source.hasLidar())) return args.mode;
-  const std::string mode = source.hasCamera() ? "visual" : "lidar";
-  std::cout << "the recording has no " << (source.hasCamera() ? "LiDAR" : "camera") << ": running mode " << mode << "\n";
+  const bool camera = source.hasCamera(), lidar = source.hasLidar();
+  if (!camera && !lidar) throw std::runtime_error("no result: the recording has neither camera images nor LiDAR scans");
+  if (camera && lidar) return args.mode;
+  const std::string mode = camera ? "visual" : "lidar";
+  const std::string missing = camera ? "LiDAR" : "camera";
+  if (args.mode_given && args.mode == mode) return mode;
+  if (args.mode_given && args.mode != "fused")
+    throw std::runtime_error("no result: mode " + args.mode + " needs " + missing + " data and the recording has none");
+  if (args.mode_given)
+    std::cerr << "lvslam: warning: the recording has no " << missing << " data: running mode " << mode << " instead of fused\n";
+  else
+    std::cout << "the recording has no " << missing << ": running mode " << mode << "\n";
   return mode;
 }
 
@@ -74,6 +87,7 @@ system::SystemConfig loadConfig(const RunArgs& args) {
 int runRun(RunArgs args) {
   if (args.input.sequence_dir.empty() && args.input.bag_files.empty()) args.input.sequence_dir = defaultSequence();
   Recording recording = openRecording(args.input);
+  system::prepareOutputFolder(args.out_dir);  // no earlier run's files stay, whatever happens now
   args.mode = modeFor(args, *recording.source);
   const system::SystemConfig config = loadConfig(args);
   ProgressLine progress;
@@ -86,6 +100,9 @@ int runRun(RunArgs args) {
                                 images, scans, wall > 0.0 ? (t - *t0) / wall : 0.0));
   });
   progress.finish();
+  if (run.output.trajectory.empty())
+    throw std::runtime_error(fmt::format("no result: mode {} gave no pose from {} images and {} scans", args.mode,
+                                         run.summary.images, run.summary.scans));
   system::writeRunOutputs(args.out_dir, run.records, run.output, run.summary, {run.accuracy, run.accuracy_refined},
                           !args.deterministic);
   std::cout << system::formatRunSummary(run.summary, run.output);

@@ -1,7 +1,5 @@
 // Runs the real binary: bad input must give exit code 2 and exactly one
 // stderr line that names the file, line or key at fault; never a crash.
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -14,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "apps/run_lvslam.h"
 #include "support/temp_dir.h"
 
 namespace lvslam {
@@ -21,34 +20,9 @@ namespace {
 
 using testing::TempDir;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-RunResult runLvslam(const TempDir& dir, const std::string& args) {
-  const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
-  const std::string cmd = std::string("cd '") + dir.path().string() + "' && '" + LVSLAM_BINARY + "' " + args +
-                          " > '" + out + "' 2> '" + err + "'";
-  const int status = std::system(cmd.c_str());
-  RunResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;  // -1: killed by a signal (a crash)
-  auto slurp = [](const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-
-int lines(const std::string& text) {
-  int n = 0;
-  for (char c : text) n += c == '\n';
-  return n;
-}
+using testing::lines;
+using testing::RunResult;
+using testing::runLvslam;
 
 TEST(Cli, HelpSucceeds) {
   TempDir dir;
@@ -233,8 +207,8 @@ TEST(Cli, RunWithoutReportAssetsWarnsInOneLine) {
   const RunResult r = runLvslam(dir, "run --sequence seq --out out");
   ::unsetenv("LVSLAM_REPORT_ASSETS");
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  const std::regex warning(R"(\nwarning: out/report.html not written: .*nowhere.*install-deps.sh[^\n]*\n)");
-  EXPECT_TRUE(std::regex_search(r.out, warning)) << r.out;
+  const std::regex warning(R"((^|\n)warning: out/report.html not written: .*nowhere.*install-deps.sh[^\n]*\n)");
+  EXPECT_TRUE(std::regex_search(r.err, warning)) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "report.html"));
 }
 

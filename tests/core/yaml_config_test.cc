@@ -1,5 +1,7 @@
 #include "lvslam/core/yaml_config.h"
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "lvslam/core/error.h"
@@ -30,6 +32,30 @@ TEST(YamlConfig, MalformedNumberNamesTheKeyAndTheValue) {
   EXPECT_NE(msg.find("abc"), std::string::npos) << msg;
   const YamlConfig n = YamlConfig::loadString("v: .nan\n", "x.yaml");
   EXPECT_FALSE(testing::errorMessageOf([&] { n.at("v").asDouble(); }).empty());
+}
+
+TEST(YamlConfig, NonScalarKeyNamesFileLineAndKeyPath) {
+  // A list or a mapping as a key was yaml-cpp's "bad conversion" later on,
+  // with no file named; anywhere in the document it is refused on loading.
+  for (const char* text : {"system:\n  ? [a, b]\n  : 1\n", "system:\n  {a: 1}: 2\n",
+                           "list:\n  - ok: 1\n  - ? [x]\n    : 2\n"}) {
+    const std::string msg = testing::errorMessageOf([&] { YamlConfig::loadString(text, "cfg.yaml"); });
+    EXPECT_NE(msg.find("cfg.yaml:"), std::string::npos) << text << " -> " << msg;
+    EXPECT_NE(msg.find("plain name"), std::string::npos) << msg;
+  }
+  const std::string msg =
+      testing::errorMessageOf([] { YamlConfig::loadString("system:\n  fine: 1\n  ? [a, b]\n  : 1\n", "c.yaml"); });
+  EXPECT_NE(msg.find("c.yaml:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("key 'system'"), std::string::npos) << msg;
+}
+
+TEST(YamlConfig, LoadFileNamesAFolderAndAMissingFile) {
+  testing::TempDir dir;
+  std::filesystem::create_directories(dir.file("a_folder"));
+  std::string msg = testing::errorMessageOf([&] { YamlConfig::loadFile(dir.file("a_folder")); });
+  EXPECT_NE(msg.find("a_folder: is a folder"), std::string::npos) << msg;
+  msg = testing::errorMessageOf([&] { YamlConfig::loadFile(dir.file("none.yaml")); });
+  EXPECT_NE(msg.find("none.yaml: file not found"), std::string::npos) << msg;
 }
 
 TEST(YamlConfig, MalformedYamlNamesFileAndLine) {

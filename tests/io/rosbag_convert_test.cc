@@ -1,14 +1,19 @@
 // Bags written with rosbag_storage's own writer, converted to sequence
 // folders and compared with what was written; bad input named precisely.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <random>
+#include <regex>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "lvslam/io/pointcloud2_decoder.h"
+#include "lvslam/io/rosbag_reader.h"
 #include "lvslam/io/rosbag_convert.h"
 #include "lvslam/io/rosbag_source.h"
 #include "lvslam/io/sequence_reader.h"
@@ -300,6 +305,80 @@ TEST(RosbagConvertBadInput, UnknownEncodingNamesBagTopicAndEncoding) {
   testing::TempDir dir3;
   const std::string bag3 = writeOneMessageBag(dir3, "/cam", testing::compressedImage(kT0, {1, 2, 3}, "png"));
   expectMentions(convertError(bag3, "", "/cam", dir3), {bag3, "/cam", "cannot decode"});
+  testing::TempDir dir4;
+  std::vector<std::uint8_t> png = encode(".png", randomImage(CV_8UC3, 4));
+  png.resize(png.size() / 2);
+  const std::string bag4 = writeOneMessageBag(dir4, "/cam", testing::compressedImage(kT0, png, "png"));
+  expectMentions(convertError(bag4, "", "/cam", dir4), {bag4, "/cam", "damaged PNG: the file ends at byte"});
+  // A failed conversion leaves nothing: no folder, no partial one.
+  EXPECT_FALSE(std::filesystem::exists(dir3.file("out")));
+  EXPECT_FALSE(std::filesystem::exists(dir3.file("out.partial")));
+}
+
+// Ten clouds, each in its own LZ4 chunk; returns the byte offset of the
+// compressed data of chunk `damaged` (0-based), whose 8 bytes there are overwritten.
+std::size_t writeBagWithADamagedChunk(const std::string& path, int damaged) {
+  {
+    rosbag::Bag bag(path, rosbag::bagmode::Write);
+    bag.setCompression(rosbag::compression::LZ4);
+    bag.setChunkThreshold(1024);
+    for (int i = 0; i < 10; ++i)
+      bag.write("/velodyne_points", testing::rosTime(kT0 + 0.1 * i + 0.05),
+                testing::velodyneCloud(kT0 + 0.1 * i, sweep(60 + i, false)));
+  }
+  std::string bytes = testing::slurpBinary(path);
+  std::size_t chunk = 0;
+  for (int i = 0; i <= damaged; ++i) chunk = bytes.find("compression=lz4", chunk + 1);
+  const std::size_t at = chunk + 200;  // well inside the chunk's compressed data
+  bytes.replace(at, 8, 8, '\x5a');
+  std::ofstream(path, std::ios::binary) << bytes;
+  return at;
+}
+
+TEST(RosbagConvertDamaged, ADamagedChunkIsConvertedUpToWithItsOffsetTopicAndTime) {
+  testing::TempDir dir;
+  const std::string bag = dir.file("damaged.bag");
+  const std::size_t damaged_at = writeBagWithADamagedChunk(bag, 4);
+  RosbagReader reader(bag);
+  std::size_t read = 0;
+  while (reader.next()) ++read;
+  EXPECT_EQ(read, 4u) << "the four clouds before the damaged chunk";
+  expectMentions(reader.damage(), {"/velodyne_points", fmt::format("{:.6f}", kT0 + 0.45), "lz4 chunk at byte",
+                                   "does not decompress"});
+  std::smatch offset;
+  ASSERT_TRUE(std::regex_search(reader.damage(), offset, std::regex(R"(chunk at byte (\d+))"))) << reader.damage();
+  const std::size_t chunk_at = std::stoul(offset[1]);
+  EXPECT_LT(chunk_at, damaged_at);
+  EXPECT_GT(chunk_at + 250, damaged_at) << "the record holding the overwritten bytes";
+
+  BagConvertOptions options;
+  options.bags = {bag};
+  options.lidar_topic = "/velodyne_points";
+  options.out_dir = dir.file("out");
+  EXPECT_EQ(convertBags(options).scans, 4u);
+  EXPECT_EQ(SequenceReader(dir.file("out")).lidarFiles().size(), 4u);
+}
+
+TEST(RosbagConvertAtomic, ReplacesAnEarlierSequenceButNoOtherFolder) {
+  testing::TempDir dir;
+  const std::string bag = writeOneMessageBag(dir, "/velodyne_points", testing::velodyneCloud(kT0, sweep(1, false)));
+  BagConvertOptions options;
+  options.bags = {bag};
+  options.lidar_topic = "/velodyne_points";
+  options.out_dir = dir.file("out");
+  dir.write("out/sequence.yaml", "an earlier conversion\n");
+  dir.write("out/lidar/stale.bin", "x");
+  EXPECT_EQ(convertBags(options).scans, 1u);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out/lidar/stale.bin")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out/INCOMPLETE")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.partial")));
+  SequenceReader reader(dir.file("out"));
+  EXPECT_EQ(reader.lidarFiles().size(), 1u);
+
+  options.out_dir = dir.file("mine");
+  dir.write("mine/notes.txt", "the user's own\n");
+  expectMentions(testing::errorMessageOf([&] { convertBags(options); }), {"mine", "not a sequence folder"});
+  EXPECT_TRUE(std::filesystem::exists(dir.file("mine/notes.txt")));
 }
 
 TEST(RosbagConvertBadInput, CloudWithoutXNamesBagTopicAndField) {

@@ -272,6 +272,41 @@ TEST(SequenceFolderBadInput, MissingScanFileAndMalformedTimeNameTheLine) {
   EXPECT_NE(msg.find("times.txt:2"), std::string::npos) << msg;
 }
 
+TEST(SequenceFolderBadInput, FileNameTooLongNamesTheLine) {
+  TempDir dir;
+  writeValidFolder(dir);
+  dir.write("seq/lidar/times.txt", "1.0 a.bin\n1.1 " + std::string(300, 'b') + ".bin\n");
+  const std::string msg = errorMessageOf([&] { SequenceReader r(dir.file("seq")); });
+  EXPECT_NE(msg.find("times.txt:2: cannot access"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("too long"), std::string::npos) << msg;
+}
+
+TEST(SequenceFolderBadInput, SymlinkLoopAsTheFolderIsAnError) {
+  TempDir dir;
+  std::filesystem::create_symlink(dir.file("seq"), dir.file("seq"));
+  const std::string msg = errorMessageOf([&] { SequenceReader r(dir.file("seq")); });
+  EXPECT_NE(msg.find("seq: cannot access"), std::string::npos) << msg;
+}
+
+TEST(SequenceFolder, ADeclaredSensorWithoutDataCountsAsAbsent) {
+  TempDir dir;
+  writeValidFolder(dir, "camera:\n  width: 64\n  height: 48\n  intrinsics: [50, 50, 32, 24]\n"
+                        "extrinsics:\n  T_camera_lidar: [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]\n");
+  dir.write("seq/camera/times.txt", "# no images\n");
+  const SequenceReader reader(dir.file("seq"));
+  EXPECT_TRUE(reader.info().camera.has_value());
+  EXPECT_FALSE(reader.hasCamera());
+  EXPECT_TRUE(reader.hasLidar());
+}
+
+TEST(SequenceFolderBadInput, AFolderMarkedIncompleteIsRefused) {
+  TempDir dir;
+  writeValidFolder(dir);
+  dir.write("seq/INCOMPLETE", "");
+  const std::string msg = errorMessageOf([&] { SequenceReader r(dir.file("seq")); });
+  EXPECT_NE(msg.find("seq/INCOMPLETE: the folder is incomplete"), std::string::npos) << msg;
+}
+
 TEST(SequenceFolderBadInput, GroundTruthWithoutFrameKey) {
   TempDir dir;
   writeValidFolder(dir);

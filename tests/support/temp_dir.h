@@ -2,6 +2,7 @@
 // A fresh temporary folder per test, removed at the end of the test.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -32,6 +33,12 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+// A file's bytes as they are ("" when it cannot be read).
+inline std::string slurpBinary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 // The message of the lvslam::Error a call throws ("" when it does not throw).
 template <typename F>

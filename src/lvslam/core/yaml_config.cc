@@ -2,34 +2,58 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
+#include <sstream>
+#include <string>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/file_access.h"
 
 namespace lvslam {
+
+namespace {
+
+// Keys are names: a mapping or a list as a key ("{a: 1}: 2", "? [a, b]")
+// would surface later as yaml-cpp's "bad conversion" with no file named, so
+// the whole document is checked once when it is loaded.
+void requireScalarKeys(const YAML::Node& node, const std::string& file, const std::string& key_path) {
+  if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i)
+      requireScalarKeys(node[i], file, key_path + "[" + std::to_string(i) + "]");
+    return;
+  }
+  if (!node.IsMap()) return;
+  for (const auto& item : node) {
+    if (!item.first.IsScalar())
+      throw Error(file + ":" + std::to_string(item.first.Mark().line + 1),
+                  "key '" + (key_path.empty() ? std::string("<root>") : key_path) +
+                      "': a mapping key must be a plain name, not a list or a mapping");
+    const std::string key = item.first.Scalar();
+    requireScalarKeys(item.second, file, key_path.empty() ? key : key_path + "." + key);
+  }
+}
+
+}  // namespace
 
 YamlConfig::YamlConfig(YAML::Node node, std::string file, std::string key_path)
     : node_(std::move(node)), file_(std::move(file)), key_path_(std::move(key_path)) {}
 
 YamlConfig YamlConfig::loadFile(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw Error(path, "file not found");
-  try {
-    YAML::Node root = YAML::LoadFile(path);
-    if (!root.IsMap()) throw Error(path, "malformed YAML: the top level is not a mapping");
-    return YamlConfig(root, path, "");
-  } catch (const YAML::Exception& e) {
-    throw Error(path, "malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
-  }
+  std::ifstream in = openInputFile(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return loadString(text.str(), path);
 }
 
 YamlConfig YamlConfig::loadString(const std::string& text, const std::string& source_name) {
+  YAML::Node root;
   try {
-    YAML::Node root = YAML::Load(text);
-    if (!root.IsMap()) throw Error(source_name, "malformed YAML: the top level is not a mapping");
-    return YamlConfig(root, source_name, "");
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw Error(source_name, "malformed YAML at line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
   }
+  if (!root.IsMap()) throw Error(source_name, "malformed YAML: the top level is not a mapping");
+  requireScalarKeys(root, source_name, "");
+  return YamlConfig(root, source_name, "");
 }
 
 std::string YamlConfig::childPath(const std::string& key) const {

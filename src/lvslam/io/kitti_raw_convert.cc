@@ -3,10 +3,11 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <opencv2/imgcodecs.hpp>
 #include <spdlog/spdlog.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/io/atomic_folder.h"
+#include "lvslam/io/image_file.h"
 #include "lvslam/io/kitti_raw_calib.h"
 #include "lvslam/io/kitti_raw_oxts.h"
 #include "lvslam/io/kitti_raw_time.h"
@@ -46,8 +47,7 @@ void writeImages(const fs::path& image_dir, SequenceWriter& writer, KittiRawConv
       ++stats.skipped;
       continue;
     }
-    const cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
-    if (image.empty()) throw Error(path, "cannot read image");
+    const cv::Mat image = readImageFile(path);
     writer.writeImage(times[i], image);
     last = times[i];
     ++stats.images;
@@ -111,12 +111,14 @@ KittiRawConvertStats convertKittiRaw(const KittiRawConvertOptions& options) {
   info.T_camera_lidar = calib.T_camera_lidar;
   if (has_oxts) info.groundtruth_frame = options.groundtruth_frame;
 
-  SequenceWriter writer(options.out_dir, info);
   KittiRawConvertStats stats;
-  writeImages(image_dir, writer, stats);
-  writeScans(velodyne, writer, stats);
+  writeFolderAtomically(options.out_dir, [&](const std::string& dir) {
+    SequenceWriter writer(dir, info);
+    writeImages(image_dir, writer, stats);
+    writeScans(velodyne, writer, stats);
+    if (has_oxts) writer.writeGroundTruth(gt);
+  });
   if (has_oxts) {
-    writer.writeGroundTruth(gt);
     stats.groundtruth = gt.size();
   } else {
     spdlog::warn("{}: no oxts/ folder, the sequence has no ground truth", options.drive_dir);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/io/atomic_folder.h"
 #include "lvslam/io/rosbag_source.h"
 #include "lvslam/io/sequence_writer.h"
 #include "lvslam/io/tum.h"
@@ -60,25 +61,27 @@ BagConvertStats convertBags(const BagConvertOptions& options) {
   info.T_camera_lidar = source_options.calibration.T_camera_lidar;
   info.groundtruth_frame = gt_frame;
 
-  SequenceWriter writer(options.out_dir, info);
   BagConvertStats stats;
   stats.lidar = source.lidarInfo();
-  while (auto data = source.next()) {
-    if (const auto* image = std::get_if<ImageFrame>(&*data)) {
-      checkImageSize(image->image, info.camera->camera, source_options.camera_topic, image->timestamp);
-      writer.writeImage(image->timestamp, image->image);
-      ++stats.images;
-    } else {
-      const auto& scan = std::get<LidarScan>(*data);
-      writer.writeScan(scan);
-      ++stats.scans;
-      stats.points += scan.size();
+  writeFolderAtomically(options.out_dir, [&](const std::string& dir) {
+    SequenceWriter writer(dir, info);
+    while (auto data = source.next()) {
+      if (const auto* image = std::get_if<ImageFrame>(&*data)) {
+        checkImageSize(image->image, info.camera->camera, source_options.camera_topic, image->timestamp);
+        writer.writeImage(image->timestamp, image->image);
+        ++stats.images;
+      } else {
+        const auto& scan = std::get<LidarScan>(*data);
+        writer.writeScan(scan);
+        ++stats.scans;
+        stats.points += scan.size();
+      }
     }
-  }
-  if (gt_frame) {
-    writer.writeGroundTruth(groundtruth);
-    stats.groundtruth = groundtruth.size();
-  }
+    if (gt_frame) {
+      writer.writeGroundTruth(groundtruth);
+      stats.groundtruth = groundtruth.size();
+    }
+  });
   stats.skipped = source.skippedMessages();
   return stats;
 }

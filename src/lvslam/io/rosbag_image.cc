@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "lvslam/core/error.h"
+#include "lvslam/io/png_check.h"
 #include "lvslam/io/rosbag_msgs.h"
 
 namespace lvslam {
@@ -41,6 +43,9 @@ ImageFrame decodeRosCompressedImage(const std::vector<std::uint8_t>& serialized,
   if (format.find("jpeg") == std::string::npos && format.find("jpg") == std::string::npos &&
       format.find("png") == std::string::npos)
     throw Error(where, fmt::format("unsupported compressed image format '{}' (supported: jpeg, png)", msg.format.c_str()));
+  // A damaged PNG is named here; OpenCV would let libpng print its own line.
+  const std::string_view raw(reinterpret_cast<const char*>(msg.data.data()), msg.data.size());
+  if (raw.starts_with("\x89PNG")) checkPngChunks(raw, where);
   const cv::Mat bytes(1, static_cast<int>(msg.data.size()), CV_8UC1, const_cast<std::uint8_t*>(msg.data.data()));
   cv::Mat image;
   if (!msg.data.empty()) image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);

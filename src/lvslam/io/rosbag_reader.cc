@@ -5,6 +5,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include "lvslam/core/error.h"
 #include "lvslam/io/rosbag_msgs.h"  // before rosbag: the C++20 allocator fix
@@ -34,6 +35,7 @@ struct RosbagReader::Impl {
   void openRecovered(const std::string& index_error);
   std::optional<BagMessage> nextIndexed();
   std::optional<BagMessage> nextRecovered();
+  std::string locateDamage() const;  // the damaged record's byte offset, by a scan of the file
 };
 
 void RosbagReader::Impl::openIndexed() {
@@ -75,17 +77,30 @@ void RosbagReader::Impl::openRecovered(const std::string& index_error) {
 
 std::optional<BagMessage> RosbagReader::Impl::nextIndexed() {
   if (!view || it == view->end()) return std::nullopt;
+  // Topic and time come from the index; the data from a chunk, which may be damaged.
+  const rosbag::MessageInstance& m = *it;
+  BagMessage msg{m.getTopic(), m.getDataType(), rosmsg::toSeconds(m.getTime()), {}};
   try {
-    const rosbag::MessageInstance& m = *it;
-    BagMessage msg{m.getTopic(), m.getDataType(), rosmsg::toSeconds(m.getTime()), {}};
     msg.data.resize(m.size());
     ros::serialization::OStream stream(msg.data.data(), static_cast<std::uint32_t>(msg.data.size()));
     m.write(stream);
     ++it;
     return msg;
   } catch (const std::exception& e) {
-    throw Error(path, std::string("cannot read a message: ") + e.what());
+    // A damaged chunk (ROSLZ4_DATA_ERROR, ...): read up to it, and say where.
+    damage = fmt::format("the message of topic {} recorded at {:.6f} cannot be read ({}); {}", msg.topic,
+                         msg.record_time, e.what(), locateDamage());
+    spdlog::warn("{}: damaged bag, read up to the damage ({})", path, damage);
+    view.reset();
+    return std::nullopt;
   }
+}
+
+std::string RosbagReader::Impl::locateDamage() const {
+  BagRecordScanner scan(path);
+  while (scan.next()) {
+  }
+  return scan.damage().empty() ? "no damaged record found by a scan of the file" : scan.damage();
 }
 
 std::optional<BagMessage> RosbagReader::Impl::nextRecovered() {

@@ -54,9 +54,11 @@ std::optional<std::uint32_t> fieldU32(const Fields& fields, const std::string& n
   return readU32(reinterpret_cast<const std::uint8_t*>(it->second.data()));
 }
 
-// Decompresses as much of `in` as is intact (a cut-off chunk gives its first blocks).
-std::size_t decompressLz4(std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& out) {
+// Decompresses as much of `in` as is intact (a cut-off chunk gives its first
+// blocks); `whole` says whether the stream ended as it should.
+std::size_t decompressLz4(std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& out, bool& whole) {
   roslz4_stream stream{};
+  whole = false;
   if (roslz4_decompressStart(&stream) != ROSLZ4_OK) return 0;
   stream.input_next = reinterpret_cast<char*>(in.data());
   stream.input_left = static_cast<int>(in.size());
@@ -64,13 +66,16 @@ std::size_t decompressLz4(std::vector<std::uint8_t>& in, std::vector<std::uint8_
   stream.output_left = static_cast<int>(out.size());
   int ret = ROSLZ4_OK;
   while (ret == ROSLZ4_OK && stream.input_left > 0 && stream.output_left > 0) ret = roslz4_decompress(&stream);
+  if (ret == ROSLZ4_OK && stream.output_left == 0) ret = roslz4_decompress(&stream);  // reads the checksum
+  whole = ret == ROSLZ4_STREAM_END;
   const std::size_t produced = out.size() - static_cast<std::size_t>(stream.output_left);
   roslz4_decompressEnd(&stream);
   return produced;
 }
 
-std::size_t decompressBz2(std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& out) {
+std::size_t decompressBz2(std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& out, bool& whole) {
   bz_stream stream{};
+  whole = false;
   if (BZ2_bzDecompressInit(&stream, 0, 0) != BZ_OK) return 0;
   stream.next_in = reinterpret_cast<char*>(in.data());
   stream.avail_in = static_cast<unsigned>(in.size());
@@ -78,6 +83,7 @@ std::size_t decompressBz2(std::vector<std::uint8_t>& in, std::vector<std::uint8_
   stream.avail_out = static_cast<unsigned>(out.size());
   int ret = BZ_OK;
   while (ret == BZ_OK && stream.avail_in > 0 && stream.avail_out > 0) ret = BZ2_bzDecompress(&stream);
+  whole = ret == BZ_STREAM_END;
   const std::size_t produced = out.size() - stream.avail_out;
   BZ2_bzDecompressEnd(&stream);
   return produced;
@@ -106,6 +112,7 @@ void BagRecordScanner::stop(const std::string& why) {
 // with the bytes there are; anything else cut off or malformed stops the scan.
 bool BagRecordScanner::readRecord(std::vector<std::uint8_t>& header, std::vector<std::uint8_t>& data) {
   const std::uint64_t start = static_cast<std::uint64_t>(in_.tellg());
+  record_start_ = start;
   if (start == file_size_) {
     done_ = true;
     return false;
@@ -147,7 +154,15 @@ bool BagRecordScanner::loadChunk(const std::vector<std::uint8_t>& header, std::v
     chunk_ = std::move(data);
   } else if (compression == "lz4" || compression == "bz2") {
     chunk_.assign(*size, 0);
-    chunk_.resize(compression == "lz4" ? decompressLz4(data, chunk_) : decompressBz2(data, chunk_));
+    bool whole = false;
+    chunk_.resize(compression == "lz4" ? decompressLz4(data, chunk_, whole) : decompressBz2(data, chunk_, whole));
+    // A whole chunk that does not decompress is damaged inside: none of its
+    // messages can be trusted, so reading stops before it.
+    if (!whole && damage_.empty()) {
+      stop(fmt::format("the {} chunk at byte {} ({} bytes) is damaged: it does not decompress", compression,
+                       record_start_, data.size()));
+      return false;
+    }
   } else {
     stop("unknown chunk compression '" + compression + "'");
     return false;

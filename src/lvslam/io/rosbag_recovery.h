@@ -47,6 +47,7 @@ class BagRecordScanner {
   std::string path_;
   std::ifstream in_;
   std::uint64_t file_size_ = 0;
+  std::uint64_t record_start_ = 0;  // byte offset of the record last read from the file
   std::vector<std::uint8_t> chunk_;  // decompressed records of the current chunk
   std::size_t chunk_pos_ = 0;
   std::map<std::uint32_t, BagConnection> connections_;

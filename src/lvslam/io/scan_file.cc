@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/file_access.h"
 
 namespace lvslam {
 
@@ -32,8 +33,7 @@ ScanLayout ScanLayout::fromFields(const std::vector<std::string>& point_fields) 
 }
 
 ScanReadStats readScanFile(const std::string& path, const ScanLayout& layout, LidarScan& scan) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error(path, "cannot open scan file");
+  std::ifstream in = openInputFile(path, "", std::ios::binary | std::ios::ate);
   const auto bytes = static_cast<std::size_t>(in.tellg());
   const std::size_t record = layout.recordBytes();
   if (bytes % record != 0)

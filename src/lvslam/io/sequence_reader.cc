@@ -3,10 +3,15 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <opencv2/imgcodecs.hpp>
 #include <spdlog/spdlog.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/file_access.h"
+#include "lvslam/io/atomic_folder.h"
+#include "lvslam/io/clock_check.h"
+#include "lvslam/io/image_file.h"
+#include "lvslam/io/intrinsics_check.h"
+#include "lvslam/io/point_field_check.h"
 #include "lvslam/io/tum.h"
 
 namespace lvslam {
@@ -22,21 +27,42 @@ void warnAboutJumps(const std::vector<TimedFile>& files, const std::string& what
                  files[i].t - files[i - 1].t, files[i].path);
 }
 
+// A declared sensor without data is read as absent (hasCamera/hasLidar), so
+// the run picks the mode the other sensor feeds instead of giving no pose.
+void warnIfEmpty(const std::vector<TimedFile>& files, const std::string& times, const std::string& what) {
+  if (files.empty()) spdlog::warn("{}: lists no {}; the sequence is read without this sensor", times, what);
+}
+
 }  // namespace
 
 SequenceReader::SequenceReader(const std::string& directory) : directory_(directory) {
-  if (!fs::is_directory(directory)) throw Error(directory, "sequence folder not found");
+  if (fileKind(directory) != FileKind::kDirectory) throw Error(directory, "sequence folder not found");
   info_ = readSequenceInfo((fs::path(directory) / "sequence.yaml").string());
+  const std::string marker = (fs::path(directory) / kIncompleteMarker).string();
+  if (fileKind(marker) != FileKind::kMissing)
+    throw Error(marker, "the folder is incomplete: the conversion that wrote it did not finish");
+  const std::string camera_times = (fs::path(directory) / "camera" / "times.txt").string();
+  const std::string lidar_times = (fs::path(directory) / "lidar" / "times.txt").string();
   if (info_.camera) {
-    const std::string times = (fs::path(directory) / "camera" / "times.txt").string();
-    camera_files_ = readTimesFile(times);
-    warnAboutJumps(camera_files_, times);
+    camera_files_ = readTimesFile(camera_times);
+    plausibility_warnings_ = intrinsicsWarnings(info_.camera->camera, (fs::path(directory) / "sequence.yaml").string());
   }
   if (info_.lidar) {
-    const std::string times = (fs::path(directory) / "lidar" / "times.txt").string();
-    lidar_files_ = readTimesFile(times);
-    warnAboutJumps(lidar_files_, times);
+    lidar_files_ = readTimesFile(lidar_times);
     layout_ = ScanLayout::fromFields(info_.lidar->point_fields);
+    for (std::string& warning :
+         pointFieldWarnings(info_.lidar->point_fields, (fs::path(directory) / "sequence.yaml").string()))
+      plausibility_warnings_.push_back(std::move(warning));
+  }
+  // A clock jump is an error; only then are the remaining gaps drop-outs.
+  checkClocksAgree(camera_files_, camera_times, lidar_files_, lidar_times);
+  if (info_.camera) {
+    warnAboutJumps(camera_files_, camera_times);
+    warnIfEmpty(camera_files_, camera_times, "image");
+  }
+  if (info_.lidar) {
+    warnAboutJumps(lidar_files_, lidar_times);
+    warnIfEmpty(lidar_files_, lidar_times, "scan");
   }
   if (hasGroundTruth() && !info_.groundtruth_frame)
     throw Error((fs::path(directory) / "sequence.yaml").string(),
@@ -44,7 +70,7 @@ SequenceReader::SequenceReader(const std::string& directory) : directory_(direct
 }
 
 bool SequenceReader::hasGroundTruth() const {
-  return fs::is_regular_file(fs::path(directory_) / "groundtruth.txt");
+  return fileKind((fs::path(directory_) / "groundtruth.txt").string()) == FileKind::kRegular;
 }
 
 Trajectory SequenceReader::groundTruth() const {
@@ -55,17 +81,20 @@ std::optional<SensorData> SequenceReader::next() {
   const bool camera_left = next_camera_ < camera_files_.size();
   const bool lidar_left = next_lidar_ < lidar_files_.size();
   if (!camera_left && !lidar_left) return std::nullopt;
-  if (lidar_left && (!camera_left || lidar_files_[next_lidar_].t <= camera_files_[next_camera_].t))
-    return loadScan(next_lidar_++);
-  return loadImage(next_camera_++);
+  SensorData data = lidar_left && (!camera_left || lidar_files_[next_lidar_].t <= camera_files_[next_camera_].t)
+                        ? SensorData(loadScan(next_lidar_++))
+                        : SensorData(loadImage(next_camera_++));
+  // After the first file read, so that a bad first file is one error line.
+  for (const std::string& warning : plausibility_warnings_) spdlog::warn("{}", warning);
+  plausibility_warnings_.clear();
+  return data;
 }
 
 ImageFrame SequenceReader::loadImage(std::size_t index) const {
   const TimedFile& f = camera_files_.at(index);
   ImageFrame frame;
   frame.timestamp = f.t;
-  frame.image = cv::imread(f.path, cv::IMREAD_UNCHANGED);
-  if (frame.image.empty()) throw Error(f.path, "cannot decode image");
+  frame.image = readImageFile(f.path);
   if (frame.image.depth() != CV_8U) throw Error(f.path, "image is not 8-bit");
   const int channels = frame.image.channels();
   if (channels != 1 && channels != 3)
@@ -81,7 +110,10 @@ LidarScan SequenceReader::loadScan(std::size_t index) const {
   const TimedFile& f = lidar_files_.at(index);
   LidarScan scan;
   scan.timestamp = f.t;
-  readScanFile(f.path, *layout_, scan);
+  // An empty file is read as a scan without points (a documented recovery:
+  // the odometry predicts across it), but not silently.
+  if (readScanFile(f.path, *layout_, scan).records == 0)
+    spdlog::warn("{}: empty scan file (no points); the odometry counts it lost and predicts across it", f.path);
   return scan;
 }
 

@@ -33,8 +33,9 @@ class SequenceReader : public SensorSource {
   // time stamp); none at the end.
   std::optional<SensorData> next() override;
   Calibration calibration() const override { return info_.calibration(); }
-  bool hasCamera() const override { return info_.camera.has_value(); }
-  bool hasLidar() const override { return info_.lidar.has_value(); }
+  // A sensor counts when sequence.yaml declares it and its times.txt lists data.
+  bool hasCamera() const override { return info_.camera.has_value() && !camera_files_.empty(); }
+  bool hasLidar() const override { return info_.lidar.has_value() && !lidar_files_.empty(); }
   void rewind() { next_camera_ = next_lidar_ = 0; }
 
   ImageFrame loadImage(std::size_t index) const;
@@ -46,6 +47,9 @@ class SequenceReader : public SensorSource {
   std::vector<TimedFile> camera_files_;
   std::vector<TimedFile> lidar_files_;
   std::optional<ScanLayout> layout_;
+  // Values that read but lose quality (point_fields, intrinsics), said once
+  // the first file has been read.
+  std::vector<std::string> plausibility_warnings_;
   std::size_t next_camera_ = 0, next_lidar_ = 0;
 };
 

@@ -8,13 +8,13 @@
 #include <fmt/format.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/file_access.h"
 #include "lvslam/core/timestamp.h"
 
 namespace lvslam {
 
 std::vector<TimedFile> readTimesFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path, "file not found");
+  std::ifstream in = openInputFile(path);
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   std::vector<TimedFile> files;
   std::string line;
@@ -31,22 +31,27 @@ std::vector<TimedFile> readTimesFile(const std::string& path) {
       throw Error(where, fmt::format("time stamp {} is not after the previous one ({}): times must increase",
                                      formatTimestamp(t), formatTimestamp(files.back().t)));
     const std::filesystem::path full = folder / file;
-    if (!std::filesystem::is_regular_file(full)) throw Error(where, "file '" + full.string() + "' not found");
-    files.push_back({t, full.string()});
+    if (fileKind(full.string(), where) != FileKind::kRegular)
+      throw Error(where, "file '" + full.string() + "' not found");
+    files.push_back({t, full.string(), line_no});
   }
   return files;
+}
+
+double medianPeriod(const std::vector<TimedFile>& files) {
+  if (files.size() < 2) return 0.0;
+  std::vector<double> periods;
+  for (std::size_t i = 1; i < files.size(); ++i) periods.push_back(files[i].t - files[i - 1].t);
+  std::nth_element(periods.begin(), periods.begin() + periods.size() / 2, periods.end());
+  return periods[periods.size() / 2];
 }
 
 std::vector<std::size_t> findTimeJumps(const std::vector<TimedFile>& files, double factor) {
   std::vector<std::size_t> jumps;
   if (files.size() < 3) return jumps;
-  std::vector<double> periods;
-  for (std::size_t i = 1; i < files.size(); ++i) periods.push_back(files[i].t - files[i - 1].t);
-  std::vector<double> sorted = periods;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double median = sorted[sorted.size() / 2];
+  const double median = medianPeriod(files);
   for (std::size_t i = 1; i < files.size(); ++i)
-    if (periods[i - 1] > factor * median) jumps.push_back(i);
+    if (files[i].t - files[i - 1].t > factor * median) jumps.push_back(i);
   return jumps;
 }
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/file_access.h"
 #include "lvslam/core/se3.h"
 #include "lvslam/core/timestamp.h"
 
@@ -35,11 +36,7 @@ bool parseNumbers(const std::string& line, std::vector<double>& values) {
   return true;
 }
 
-std::ifstream openOrThrow(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path, "cannot open file");
-  return in;
-}
+std::ifstream openOrThrow(const std::string& path) { return openInputFile(path); }
 
 void checkIncreasing(const std::string& path, int line_no, const Trajectory& traj, double t) {
   if (!traj.empty() && !(t > traj.back().t))

@@ -11,6 +11,7 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
+#include "lvslam/io/atomic_folder.h"
 #include "lvslam/io/sequence_writer.h"
 #include "lvslam/sim/camera_renderer.h"
 #include "lvslam/sim/counter_random.h"
@@ -100,11 +101,9 @@ bool simulateSequenceOnce(const SimOptions& options, const std::string& out_dir,
   const fs::path dir(out_dir);
   if (fs::exists(dir / "sequence.yaml")) return false;
   if (announce) announce();
-  const fs::path partial = dir.string() + ".partial";
-  fs::remove_all(partial);
-  fs::remove_all(dir);
-  simulateSequence(options, partial.string());
-  fs::rename(partial, dir);
+  // Whole or not at all, as the converters write (a killed run leaves only
+  // a marked "<dir>.partial", replaced next time).
+  writeFolderAtomically(out_dir, [&](const std::string& partial) { simulateSequence(options, partial); });
   return true;
 }
 

@@ -21,9 +21,10 @@ struct SimulationSummary {
 SimulationSummary simulateSequence(const SimOptions& options, const std::string& out_dir);
 
 // The sequence in out_dir, simulated only when out_dir has no
-// sequence.yaml: written into "<out_dir>.partial" and renamed when complete,
-// so an interrupted run never leaves a half sequence that looks whole (a
-// leftover partial or incomplete out_dir is removed first). `announce` is
+// sequence.yaml: written into "<out_dir>.partial" and renamed when complete
+// (io/atomic_folder.h), so an interrupted run never leaves a half sequence
+// that looks whole (a leftover partial is replaced; an out_dir without
+// sequence.yaml is replaced only when empty). `announce` is
 // called just before a simulation starts. Returns whether it simulated.
 bool simulateSequenceOnce(const SimOptions& options, const std::string& out_dir,
                           const std::function<void()>& announce = {});

@@ -2,27 +2,17 @@
 
 #include <chrono>
 
+#include "lvslam/eval/sensor_frame.h"
+
 namespace lvslam::system {
-
-namespace {
-
-Trajectory transformed(const Trajectory& trajectory, const Eigen::Isometry3d& T_frame_other) {
-  Trajectory out = trajectory;
-  for (StampedPose& pose : out) pose.T_world_frame = pose.T_world_frame * T_frame_other;
-  return out;
-}
-
-}  // namespace
 
 std::optional<eval::EvalResult> evaluateOutput(const Recording& recording, const SystemOutput& output,
                                                const Trajectory& trajectory) {
   if (!recording.ground_truth || trajectory.size() < eval::kMinAssociatedPairs) return std::nullopt;
   const bool gt_is_camera = recording.ground_truth_frame == GroundTruthFrame::kCamera;
   const Eigen::Isometry3d T_camera_lidar = recording.source->calibration().T_camera_lidar;
-  // Compare like with like: the estimate in the frame the ground truth gives.
-  Trajectory estimate = trajectory;
-  if (output.trajectory_is_camera && !gt_is_camera) estimate = transformed(estimate, T_camera_lidar);
-  if (!output.trajectory_is_camera && gt_is_camera) estimate = transformed(estimate, T_camera_lidar.inverse());
+  const Trajectory estimate = eval::inSensorFrame(trajectory, eval::sensorFrameOf(output.trajectory_is_camera),
+                                                  eval::sensorFrameOf(gt_is_camera), T_camera_lidar);
   eval::EvalOptions options;
   options.alignment = output.metric ? eval::Alignment::kSE3 : eval::Alignment::kSim3;
   options.gt_name = recording.ground_truth_path;
