@@ -76,8 +76,9 @@ bool LoopClosure::addKeyframe(LoopKeyframe keyframe) {
   record.verified = true;
   record.verification =
       verifyLoop(keyframes_.back().points, submapAround(found->index), found->match.yaw, config_, registration_);
-  record.reason = record.verification.reason;
-  const bool accepted = record.verification.accepted;
+  record.reason = record.verification.reason.empty() ? offOdometry(found->index, record.verification.T_candidate_query)
+                                                      : record.verification.reason;
+  const bool accepted = record.reason.empty();
   if (accepted) {
     GraphEdge edge;
     edge.from = found->index;
@@ -92,6 +93,24 @@ bool LoopClosure::addKeyframe(LoopKeyframe keyframe) {
   }
   candidates_.push_back(std::move(record));
   return accepted;
+}
+
+// A loop must agree with the odometry within the drift the graph allows it
+// over the path between the two keyframes (the odometry's own uncertainty,
+// as LIO-SAM searches candidates within a radius of the odometry's pose):
+// scenes with a symmetry or a repeated room register well in a wrong place.
+std::string LoopClosure::offOdometry(int candidate, const Eigen::Isometry3d& T_candidate_query) const {
+  const LoopKeyframe& from = keyframes_[static_cast<std::size_t>(candidate)];
+  const LoopKeyframe& to = keyframes_.back();
+  const Eigen::Isometry3d offset = (from.T_odom_lidar.inverse() * to.T_odom_lidar).inverse() * T_candidate_query;
+  const double sqrt_path = std::sqrt(std::max(to.path_length - from.path_length, kMinEdgePath));
+  const double max_m = config_.odometry_gate_sigmas * config_.odometry_sigma_m * sqrt_path;
+  const double max_deg = config_.odometry_gate_sigmas * config_.odometry_sigma_deg * sqrt_path;
+  const double off_m = offset.translation().norm();
+  const double off_deg = rotationAngle(offset) / kDegree;
+  if (off_m <= max_m && off_deg <= max_deg) return "";
+  return fmt::format("off the odometry by {:.2f} m, {:.1f} deg (> {:.2f} m, {:.1f} deg)", off_m, off_deg, max_m,
+                     max_deg);
 }
 
 GraphEdge LoopClosure::odometryEdge(int to) const {

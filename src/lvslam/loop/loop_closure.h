@@ -2,7 +2,9 @@
 // Loop closure over a run's LiDAR keyframes: each keyframe gets its Scan
 // Context, a candidate among the older keyframes and, when the descriptors
 // agree, a geometric verification; accepted loops become robust edges of
-// the global pose graph, whose solution moves every keyframe. Single
+// the global pose graph, whose solution moves every keyframe. A verified
+// loop must also agree with the odometry within its drift over the path
+// between the two keyframes. Single
 // threaded and deterministic: the order of keyframes fixes every figure
 // (system/ runs it on its own thread).
 #include <string>
@@ -56,6 +58,7 @@ class LoopClosure {
  private:
   std::vector<SubmapScan> submapAround(int candidate) const;
   GraphEdge odometryEdge(int to) const;
+  std::string offOdometry(int candidate, const Eigen::Isometry3d& T_candidate_query) const;
 
   LoopClosureConfig config_;
   lidar::RegistrationConfig registration_;

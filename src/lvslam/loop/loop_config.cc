@@ -30,7 +30,7 @@ LoopClosureConfig loadLoopClosureConfig(const YamlConfig& root) {
   const YamlConfig& n = *found;
   n.requireKnownKeys({"enabled", "keyframe_distance", "keyframe_angle_deg", "scan_context", "exclude_recent_path",
                       "ring_key_candidates", "max_descriptor_distance", "submap_keyframes", "max_rms",
-                      "min_inlier_ratio", "odometry_sigma_m", "odometry_sigma_deg", "loop_sigma_m",
+                      "min_inlier_ratio", "odometry_sigma_m", "odometry_sigma_deg", "odometry_gate_sigmas", "loop_sigma_m",
                       "loop_sigma_deg", "loop_kernel"});
   c.enabled = n.getBool("enabled", c.enabled);
   c.keyframe_distance = n.getDouble("keyframe_distance", c.keyframe_distance);
@@ -44,11 +44,12 @@ LoopClosureConfig loadLoopClosureConfig(const YamlConfig& root) {
   c.min_inlier_ratio = n.getDouble("min_inlier_ratio", c.min_inlier_ratio);
   c.odometry_sigma_m = n.getDouble("odometry_sigma_m", c.odometry_sigma_m);
   c.odometry_sigma_deg = n.getDouble("odometry_sigma_deg", c.odometry_sigma_deg);
+  c.odometry_gate_sigmas = n.getDouble("odometry_gate_sigmas", c.odometry_gate_sigmas);
   c.loop_sigma_m = n.getDouble("loop_sigma_m", c.loop_sigma_m);
   c.loop_sigma_deg = n.getDouble("loop_sigma_deg", c.loop_sigma_deg);
   c.loop_kernel = n.getDouble("loop_kernel", c.loop_kernel);
   for (const char* key : {"keyframe_distance", "keyframe_angle_deg", "max_rms", "odometry_sigma_m",
-                          "odometry_sigma_deg", "loop_sigma_m", "loop_sigma_deg", "loop_kernel"})
+                          "odometry_sigma_deg", "odometry_gate_sigmas", "loop_sigma_m", "loop_sigma_deg", "loop_kernel"})
     if (n.has(key)) requirePositive(n, key, n.at(key).asDouble());
   if (!(c.exclude_recent_path >= 0.0)) n.at("exclude_recent_path").fail("must not be negative");
   if (c.ring_key_candidates < 1) n.at("ring_key_candidates").fail("must be at least 1");

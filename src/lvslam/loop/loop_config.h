@@ -29,6 +29,9 @@ struct LoopClosureConfig {
   // deviation per square root of the path between keyframes.
   double odometry_sigma_m = 0.03;    // metres per sqrt(m)
   double odometry_sigma_deg = 0.3;   // degrees per sqrt(m)
+  // A verified loop further off the odometry than this many of those
+  // standard deviations (over the path between its keyframes) is rejected.
+  double odometry_gate_sigmas = 5.0;
   // Loop edges: the ICP's own covariance plus this floor (the ICP's figure
   // counts every point as independent).
   double loop_sigma_m = 0.05;
