@@ -60,6 +60,7 @@ std::string loopJson(const loop::LoopClosureResult& result) {
   for (const loop::LoopCandidateRecord& c : result.candidates) candidates.push_back(candidateJson(c));
   return JsonObject()
       .addCount("keyframes", result.keyframe_times.size())
+      .addRaw("keyframe_t", eval::jsonArray(result.keyframe_times))
       .addCount("candidates", result.candidates.size())
       .addCount("verified", verifiedCount(result))
       .addCount("accepted", result.accepted())
