@@ -55,6 +55,8 @@ def evaluate(run_dir, args):
         loop = json.load(f).get('loop')
     if loop is None:
         sys.exit(f'{run_dir}/stats.json: no loop section (loop closure off, or a run without LiDAR)')
+    if 'keyframe_t' not in loop:
+        sys.exit(f'{run_dir}/stats.json: the loop section has no keyframe_t (written by an older lvslam)')
     times, positions = read_tum(os.path.join(run_dir, 'groundtruth.tum'))
     keyframes = [position_at(times, positions, t) for t in loop['keyframe_t']]
     path = path_lengths(keyframes)

@@ -10,6 +10,7 @@
 
 #include "lvslam/core/se3.h"
 #include "lvslam/system/run_recording.h"
+#include "support/trajectory_at.h"
 #include "system/sim_cache.h"
 
 namespace lvslam::system {
@@ -44,14 +45,6 @@ LoopRun runTwoLaps(bool loop_closure) {
 }
 
 
-Eigen::Isometry3d truePoseAt(const Trajectory& gt, double t) {
-  const auto after = std::lower_bound(gt.begin(), gt.end(), t, [](const StampedPose& p, double s) { return p.t < s; });
-  if (after == gt.begin()) return after->T_world_frame;
-  if (after == gt.end()) return gt.back().T_world_frame;
-  const auto before = after - 1;
-  return interpolateAtTime(t, before->t, before->T_world_frame, after->t, after->T_world_frame);
-}
-
 // What loop closure is for: the error of the pose between a frame of the
 // second lap and the frame of the first lap nearest to it (within 0.2 m),
 // mean over the second lap's frames, in metres.
@@ -60,19 +53,19 @@ double revisitError(const Trajectory& estimate, const Trajectory& gt, double lap
   int count = 0;
   for (const StampedPose& later : estimate) {
     if (later.t < lap_start) continue;
-    const Eigen::Isometry3d T_true_later = truePoseAt(gt, later.t);
+    const Eigen::Isometry3d T_true_later = lvslam::testing::poseAt(gt, later.t);
     const StampedPose* nearest = nullptr;
     double nearest_m = 0.2;
     for (const StampedPose& earlier : estimate) {
       if (earlier.t > later.t - 10.0) break;
-      const double m = (truePoseAt(gt, earlier.t).translation() - T_true_later.translation()).norm();
+      const double m = (lvslam::testing::poseAt(gt, earlier.t).translation() - T_true_later.translation()).norm();
       if (m < nearest_m) {
         nearest_m = m;
         nearest = &earlier;
       }
     }
     if (nearest == nullptr) continue;
-    const Eigen::Isometry3d true_step = truePoseAt(gt, nearest->t).inverse() * T_true_later;
+    const Eigen::Isometry3d true_step = lvslam::testing::poseAt(gt, nearest->t).inverse() * T_true_later;
     const Eigen::Isometry3d step = nearest->T_world_frame.inverse() * later.T_world_frame;
     sum += (true_step.inverse() * step).translation().norm();
     ++count;
@@ -92,8 +85,8 @@ TEST(LoopClosureEndToEnd, TwoLapsOfTheRoomCloseOnlyTrueLoopsAndLowerTheRefinedEr
     ++accepted;
     // A true revisit: the keyframes' camera positions (the ground truth's frame) within a metre.
     const double apart =
-        (truePoseAt(with.ground_truth, c.query_t).translation() -
-         truePoseAt(with.ground_truth, c.candidate_t).translation()).norm();
+        (lvslam::testing::poseAt(with.ground_truth, c.query_t).translation() -
+         lvslam::testing::poseAt(with.ground_truth, c.candidate_t).translation()).norm();
     EXPECT_LT(apart, 1.0) << "keyframes " << c.query << " and " << c.candidate;
     EXPECT_GT(c.graph_weight, 0.5) << "keyframes " << c.query << " and " << c.candidate;
   }
