@@ -20,6 +20,19 @@ TEST(LoopClosureConfig, ReadsValuesAndKeepsDefaultsWithoutTheSection) {
   EXPECT_TRUE(fromText("lidar: {}\n").enabled);
 }
 
+TEST(LoopClosureConfig, ShippedSimPresetEqualsTheDefaults) {
+  const LoopClosureConfig shipped = loadLoopClosureConfig(YamlConfig::loadFile(LVSLAM_SOURCE_DIR "/config/sim.yaml"));
+  const LoopClosureConfig defaults;
+  EXPECT_EQ(shipped.enabled, defaults.enabled);
+  EXPECT_EQ(shipped.keyframe_distance, defaults.keyframe_distance);
+  EXPECT_EQ(shipped.scan_context.max_radius, defaults.scan_context.max_radius);
+  EXPECT_EQ(shipped.max_descriptor_distance, defaults.max_descriptor_distance);
+  EXPECT_EQ(shipped.max_rms, defaults.max_rms);
+  EXPECT_EQ(shipped.min_inlier_ratio, defaults.min_inlier_ratio);
+  EXPECT_EQ(shipped.odometry_gate_sigmas, defaults.odometry_gate_sigmas);
+  EXPECT_EQ(shipped.loop_kernel, defaults.loop_kernel);
+}
+
 TEST(LoopClosureConfig, NamesTheFileAndTheKeyOfABadValue) {
   using testing::errorMessageOf;
   EXPECT_EQ(errorMessageOf([] { fromText("loop:\n  kernel: 3\n"); }), "test.yaml: key 'loop': unknown key 'kernel'");
