@@ -22,6 +22,7 @@
 #include "lvslam/io/tum.h"
 #include "lvslam/sim/simulate_sequence.h"
 #include "lvslam/system/ground_truth_export.h"
+#include "lvslam/system/offline/loop_report.h"
 #include "lvslam/system/run_recording.h"
 #include "lvslam/system/output_folder.h"
 
@@ -106,11 +107,12 @@ int runRun(RunArgs args) {
   system::writeRunOutputs(args.out_dir, run.records, run.output, run.summary, {run.accuracy, run.accuracy_refined},
                           !args.deterministic);
   std::cout << system::formatRunSummary(run.summary, run.output);
+  if (run.records.loop) std::cout << system::formatLoopSummary(*run.records.loop);
   std::cout << fmt::format("wrote {}/{{trajectory.tum (online {}, {} poses), trajectory_refined.tum (offline, {} poses), "
                            "stats.json, map.ply ({} points), lines.ply ({} lines)}}\n",
                            args.out_dir, run.output.trajectory_is_camera ? "T_world_camera" : "T_world_lidar",
                            run.output.trajectory.size(), run.output.trajectory_refined.size(),
-                           run.records.lidar_map.size(), run.output.lines_world.size());
+                           run.output.lidar_map.size(), run.output.lines_world.size());
   if (run.accuracy) std::cout << "online (trajectory.tum):\n" << eval::formatSummary(*run.accuracy);
   if (run.accuracy_refined)
     std::cout << "offline refinement (trajectory_refined.tum):\n" << eval::formatSummary(*run.accuracy_refined);

@@ -12,6 +12,7 @@
 #include "lvslam/core/se3.h"
 #include "lvslam/system/run_recording.h"
 #include "support/temp_dir.h"
+#include "support/trajectory_at.h"
 #include "system/sim_cache.h"
 
 namespace lvslam::system {
@@ -66,20 +67,13 @@ void printFigures(const char* what, const RunResult& r) {
               r.summary.visual_output, r.summary.switches, r.summary.fusion_lines_per_frame);
 }
 
-Eigen::Isometry3d groundTruthAt(const Trajectory& gt, double t) {
-  const auto after = std::lower_bound(gt.begin(), gt.end(), t, [](const StampedPose& p, double s) { return p.t < s; });
-  if (after == gt.begin()) return after->T_world_frame;
-  if (after == gt.end()) return gt.back().T_world_frame;
-  const auto before = after - 1;
-  return interpolateAtTime(t, before->t, before->T_world_frame, after->t, after->T_world_frame);
-}
-
 // How far each output step (consecutive poses) is from the true step, in m.
 std::vector<double> stepErrors(const Trajectory& est, const Trajectory& gt) {
   std::vector<double> errors;
   for (std::size_t k = 1; k < est.size(); ++k) {
     const Eigen::Isometry3d step = est[k - 1].T_world_frame.inverse() * est[k].T_world_frame;
-    const Eigen::Isometry3d true_step = groundTruthAt(gt, est[k - 1].t).inverse() * groundTruthAt(gt, est[k].t);
+    const Eigen::Isometry3d true_step =
+        lvslam::testing::poseAt(gt, est[k - 1].t).inverse() * lvslam::testing::poseAt(gt, est[k].t);
     errors.push_back((true_step.inverse() * step).translation().norm());
   }
   return errors;

@@ -1,5 +1,7 @@
 #include "lvslam/system/lidar_worker.h"
 
+#include <cmath>
+
 #include "lvslam/core/se3.h"
 #include "lvslam/system/stopwatch.h"
 
@@ -17,6 +19,22 @@ LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibrat
     // Camera-time poses are only worth handing back when the visual side uses them.
     if (config.visual.visual.use_lidar_pose_priors) T_lidar_camera_ = calibration.T_camera_lidar.inverse();
   }
+  if (config.loop.enabled) {
+    keyframe_selector_.emplace(config.loop.keyframe_distance, config.loop.keyframe_angle_deg * M_PI / 180.0);
+    loop_closure_ = std::make_unique<LoopClosureWorker>(config.loop, config.lidar.registration, !config.deterministic);
+  }
+}
+
+void LidarWorker::offerKeyframe(const lidar::OdometryResult& result) {
+  double path_length = 0.0;
+  if (!loop_closure_ || !keyframe_selector_->isKeyframe(result.T_world_lidar, path_length)) return;
+  map_keyframe_starts_.push_back(map_.points().size());
+  loop_closure_->add({result.timestamp, result.T_world_lidar, odometry_.currentFrame().points, path_length});
+}
+
+std::optional<loop::LoopClosureResult> LidarWorker::finishLoopClosure() {
+  if (!loop_closure_) return std::nullopt;
+  return loop_closure_->finish();
 }
 
 void LidarWorker::addScan(const LidarScan& scan) {
@@ -138,7 +156,10 @@ void LidarWorker::registerPending() {
   last_information_ = result.information;
   scan_trajectory_.push_back({result.timestamp, result.T_world_lidar});
   const bool lost = result.status == lidar::OdometryStatus::kLost;
-  if (!lost) map_.add(odometry_.currentFrame());
+  if (!lost) {
+    offerKeyframe(result);
+    map_.add(odometry_.currentFrame());
+  }
   // A frame between a lost scan and its neighbour has no pose worth a prior.
   poseWaitingFrames(false, !lost && !previous_scan_lost_);
   previous_scan_lost_ = lost;

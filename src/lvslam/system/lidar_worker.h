@@ -9,6 +9,7 @@
 // two sweeps once the next is; in fused mode that one, in the camera frame,
 // goes back to the visual side with a later frame's answer.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "lvslam/lidar/lidar_odometry.h"
 #include "lvslam/system/frame_records.h"
 #include "lvslam/system/lidar_map_export.h"
+#include "lvslam/system/offline/loop_closure_worker.h"
 #include "lvslam/system/system_config.h"
 
 namespace lvslam::system {
@@ -54,10 +56,17 @@ class LidarWorker {
   const LidarMapExport& map() const { return map_; }
   // T_odom_lidar at each registered scan's time stamp.
   const Trajectory& scanTrajectory() const { return scan_trajectory_; }
+  // With loop closure on (loop.enabled): registered scans become keyframes
+  // by the path travelled and go to the loop closure's own thread. After
+  // finish(), its result (none when off), and per keyframe the index of the
+  // first map() point added from its scan on.
+  std::optional<loop::LoopClosureResult> finishLoopClosure();
+  const std::vector<std::size_t>& mapKeyframeStarts() const { return map_keyframe_starts_; }
 
  private:
   void registerPending();
   void poseWaitingFrames(bool extrapolate, bool reliable);
+  void offerKeyframe(const lidar::OdometryResult& result);
 
   lidar::LidarOdometry odometry_;
   std::optional<fusion::FusionStep> fusion_;
@@ -79,6 +88,9 @@ class LidarWorker {
   std::vector<ScanRecord> scans_;
   std::vector<LidarFrameRecord> frames_;
   Trajectory scan_trajectory_;
+  std::optional<loop::KeyframeSelector> keyframe_selector_;
+  std::unique_ptr<LoopClosureWorker> loop_closure_;
+  std::vector<std::size_t> map_keyframe_starts_;
 };
 
 }  // namespace lvslam::system

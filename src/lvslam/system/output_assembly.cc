@@ -1,6 +1,7 @@
 #include "lvslam/system/output_assembly.h"
 
 #include "lvslam/system/final_visual_poses.h"
+#include "lvslam/system/offline/loop_correction.h"
 #include "lvslam/system/offline/refinement.h"
 
 namespace lvslam::system {
@@ -73,6 +74,9 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
     }
   }
   out.trajectory_refined = refineTrajectory(records, config, T_camera_lidar, out.trajectory);
+  out.lidar_map = records.loop && records.loop->solved
+                      ? correctMap(records.lidar_map, records.lidar_map_keyframe_starts, LoopCorrection(*records.loop))
+                      : records.lidar_map;
   addLines(records, out);
   addSubsystemTrajectories(records, config, T_lidar_camera, out);
   return out;

@@ -28,6 +28,9 @@ struct SystemOutput {
   std::vector<SwitchEvent> switches;
   // Where each visual map that reached the output sits in its world.
   std::map<int, Eigen::Isometry3d> T_world_map;
+  // The LiDAR map (odometry frame), each point moved with its keyframe's
+  // loop correction when loops were closed.
+  std::vector<PlyPoint> lidar_map;
   std::vector<PlySegment> lines_world;  // fusion lines (red) and the visual map's lines (green; orange from fusion)
   // Each subsystem's own estimate, before the detection module chose: the
   // visual subsystem's T_map_camera per map id (in that map's frame, on the

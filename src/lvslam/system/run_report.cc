@@ -13,6 +13,7 @@
 #include "lvslam/eval/json_writer.h"
 #include "lvslam/fusion/line_accuracy.h"
 #include "lvslam/io/tum.h"
+#include "lvslam/system/offline/loop_report.h"
 
 namespace lvslam::system {
 
@@ -259,14 +260,15 @@ void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records,
   for (const ScanRecord& s : records.scans) scans.push_back(scanJson(s, with_timings));
   for (const SwitchEvent& e : output.switches)
     switches.push_back(JsonObject().addNumber("t", e.t).addString("to", sourceName(e.to)).addString("reason", e.reason).str());
-  const std::string stats = JsonObject()
-                                .addRaw("summary", summaryJson(summary, accuracy, with_timings))
-                                .addRaw("switches", jsonList(switches))
-                                .addRaw("frames", jsonList(frames))
-                                .addRaw("scans", jsonList(scans))
-                                .str();
+  JsonObject json;
+  json.addRaw("summary", summaryJson(summary, accuracy, with_timings))
+      .addRaw("switches", jsonList(switches))
+      .addRaw("frames", jsonList(frames))
+      .addRaw("scans", jsonList(scans));
+  if (records.loop) json.addRaw("loop", loopJson(*records.loop));
+  const std::string stats = json.str();
   writeText(dir / "stats.json", stats + "\n");
-  writePointCloudPly((dir / "map.ply").string(), records.lidar_map);
+  writePointCloudPly((dir / "map.ply").string(), output.lidar_map);
   writeLineSegmentsPly((dir / "lines.ply").string(), output.lines_world);
 }
 

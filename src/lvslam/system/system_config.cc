@@ -84,13 +84,14 @@ FusedEstimatorConfig loadEstimatorConfig(const YamlConfig& n) {
 
 SystemConfig loadSystemConfig(const YamlConfig& root) {
   // A misspelt section would silently keep all its defaults.
-  root.requireKnownKeys({"lidar", "visual", "fusion", "detection", "estimator", "system"});
+  root.requireKnownKeys({"lidar", "visual", "fusion", "detection", "estimator", "loop", "system"});
   SystemConfig c;
   if (root.find("lidar")) c.lidar = lidar::loadLidarOdometryConfig(root);
   if (const auto v = root.find("visual")) c.visual.visual = visual::loadVisualConfig(*v);
   c.fusion = fusion::loadFusionConfig(root);
   if (const auto d = root.find("detection")) c.detection = loadDetectionConfig(*d);
   if (const auto f = root.find("estimator")) c.estimator = loadEstimatorConfig(*f);
+  c.loop = loop::loadLoopClosureConfig(root);
   if (const auto s = root.find("system")) {
     s->requireKnownKeys({"fusion_lines_in_tracking", "lidar_direction_refinement", "depth_hint_max_dt",
                          "keypoint_depth_radius_px", "keypoint_depth_max_dt", "keypoint_depth_source",

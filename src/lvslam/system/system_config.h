@@ -1,7 +1,7 @@
 #pragma once
 // Everything the dual system is configured with, one plain struct per box of
 // the paper's Fig. 1, and the switches of the ablation study. Loaded from the
-// sections lidar:, visual:, fusion:, detection:, estimator: and system:
+// sections lidar:, visual:, fusion:, detection:, estimator:, loop: and system:
 // of a YAML file;
 // absent sections keep the defaults, unknown keys are lvslam::Errors.
 #include <string>
@@ -9,6 +9,7 @@
 #include "lvslam/core/yaml_config.h"
 #include "lvslam/fusion/fusion_config.h"
 #include "lvslam/lidar/lidar_config.h"
+#include "lvslam/loop/loop_config.h"
 #include "lvslam/system/detection_module.h"
 #include "lvslam/system/online/fused_estimator.h"
 #include "lvslam/visual/tracking/visual_slam.h"
@@ -35,6 +36,7 @@ struct SystemConfig {
   fusion::FusionConfig fusion;
   DetectionConfig detection;
   FusedEstimatorConfig estimator;
+  loop::LoopClosureConfig loop;  // LiDAR loop closure: *_refined outputs and the map only
   // The paper's output (ablation "paper-output"): the visual pose while
   // the detection module trusts it, the LiDAR's chained in otherwise.
   bool paper_output = false;

@@ -230,6 +230,8 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool final_map_rel
     records.scans = workers.lidar->scans();
     records.T_odom_lidar_scans = workers.lidar->scanTrajectory();
     records.lidar_map = workers.lidar->map().points();
+    records.loop = workers.lidar->finishLoopClosure();
+    records.lidar_map_keyframe_starts = workers.lidar->mapKeyframeStarts();
   }
   if (workers.visual) {
     records.visual = workers.visual->takeFrames();

@@ -12,6 +12,7 @@
 
 #include "lvslam/io/ply_writer.h"
 #include "lvslam/io/sensor_source.h"
+#include "lvslam/loop/loop_closure.h"
 #include "lvslam/system/frame_records.h"
 #include "lvslam/system/online/online_output.h"
 #include "lvslam/system/system_config.h"
@@ -31,6 +32,10 @@ struct PipelineRecords {
   std::vector<ScanRecord> scans;
   Trajectory T_odom_lidar_scans;          // at scan times
   std::vector<PlyPoint> lidar_map;        // odometry world frame
+  // Loop closure over the LiDAR keyframes (loop.enabled, lidar and fused
+  // modes), and per keyframe the first lidar_map point added from its scan on.
+  std::optional<loop::LoopClosureResult> loop;
+  std::vector<std::size_t> lidar_map_keyframe_starts;
   std::vector<MapLine> visual_lines;      // the lines of every visual map, old and current
   // The online output, one per camera frame, each made when its data were in
   // (online/online_output.h), with the detection module's switches and where

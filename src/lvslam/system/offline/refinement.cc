@@ -1,5 +1,7 @@
 #include "lvslam/system/offline/refinement.h"
 
+#include "lvslam/system/offline/loop_correction.h"
+
 namespace lvslam::system {
 
 namespace {
@@ -64,15 +66,24 @@ Trajectory lidarAtFrames(const PipelineRecords& records, const Eigen::Isometry3d
   return refined;
 }
 
-}  // namespace
-
-Trajectory refineTrajectory(const PipelineRecords& records, const SystemConfig& config,
-                            const Eigen::Isometry3d& T_camera_lidar, const Trajectory& online) {
+Trajectory refineWithoutLoops(const PipelineRecords& records, const SystemConfig& config,
+                              const Eigen::Isometry3d& T_camera_lidar, const Trajectory& online) {
   if (config.mode == RunMode::kLidar) return records.lidar.empty() ? online : lidarAtFrames(records, T_camera_lidar);
   if (config.mode == RunMode::kFused && !config.paper_output)
     return withOnlineWhereUnrefined(smoothFusedGraph(records, config, T_camera_lidar), online);
   if (!config.final_map_poses) return online;
   return replayWithFinalPoses(records, config, T_camera_lidar);
+}
+
+}  // namespace
+
+Trajectory refineTrajectory(const PipelineRecords& records, const SystemConfig& config,
+                            const Eigen::Isometry3d& T_camera_lidar, const Trajectory& online) {
+  Trajectory refined = refineWithoutLoops(records, config, T_camera_lidar, online);
+  if (!records.loop || records.loop->accepted() == 0 || !records.loop->solved) return refined;
+  // The LiDAR odometry of the refined poses' sensor: the camera's per frame, else the LiDAR's per scan.
+  const Trajectory odometry = records.lidar.empty() ? records.T_odom_lidar_scans : lidarAtFrames(records, T_camera_lidar);
+  return correctTrajectory(refined, odometry, LoopCorrection(*records.loop));
 }
 
 }  // namespace lvslam::system

@@ -1,0 +1,73 @@
+#pragma once
+// Loop closure over a run's LiDAR keyframes: each keyframe gets its Scan
+// Context, a candidate among the older keyframes and, when the descriptors
+// agree, a geometric verification; accepted loops become robust edges of
+// the global pose graph, whose solution moves every keyframe. A verified
+// loop must also agree with the odometry within its drift over the path
+// between the two keyframes. Single
+// threaded and deterministic: the order of keyframes fixes every figure
+// (system/ runs it on its own thread).
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "lvslam/lidar/lidar_config.h"
+#include "lvslam/loop/global_pose_graph.h"
+#include "lvslam/loop/loop_config.h"
+#include "lvslam/loop/loop_keyframe.h"
+#include "lvslam/loop/loop_verification.h"
+#include "lvslam/loop/scan_context.h"
+
+namespace lvslam::loop {
+
+// The best candidate of a keyframe and what became of it.
+struct LoopCandidateRecord {
+  int query = 0, candidate = 0;  // keyframe indices
+  double query_t = 0.0, candidate_t = 0.0;
+  double ring_key_distance = 0.0;
+  double descriptor_distance = 0.0;
+  double yaw = 0.0;  // radians, from the descriptor
+  bool verified = false;  // reached the ICP (descriptor distance low enough)
+  LoopVerification verification;
+  std::string reason;       // why rejected, empty when accepted
+  double graph_weight = 0.0;  // accepted: the kernel's weight in the solved graph
+};
+
+struct LoopClosureResult {
+  std::vector<double> keyframe_times;
+  std::vector<Eigen::Isometry3d> T_odom_lidar;            // the odometry's keyframe poses
+  std::vector<Eigen::Isometry3d> T_odom_lidar_corrected;  // after the graph
+  std::vector<LoopCandidateRecord> candidates;
+  bool solved = false;
+  std::size_t accepted() const;
+};
+
+class LoopClosure {
+ public:
+  LoopClosure(const LoopClosureConfig& config, const lidar::RegistrationConfig& registration);
+
+  // Adds the next keyframe (in time order); true when it closed a loop.
+  bool addKeyframe(LoopKeyframe keyframe);
+  // The graph over every keyframe so far, solved from the odometry poses.
+  LoopClosureResult solve() const;
+
+  std::size_t keyframeCount() const { return keyframes_.size(); }
+  const std::vector<LoopCandidateRecord>& candidates() const { return candidates_; }
+
+ private:
+  std::vector<SubmapScan> submapAround(int candidate) const;
+  GraphEdge odometryEdge(int to) const;
+  std::string offOdometry(int candidate, const Eigen::Isometry3d& T_candidate_query) const;
+
+  LoopClosureConfig config_;
+  lidar::RegistrationConfig registration_;
+  std::vector<LoopKeyframe> keyframes_;
+  std::vector<ScanContext> descriptors_;
+  std::vector<double> path_lengths_;
+  std::vector<LoopCandidateRecord> candidates_;
+  std::vector<std::size_t> loop_records_;  // index into candidates_ of each loop edge
+  std::vector<GraphEdge> loop_edges_;
+};
+
+}  // namespace lvslam::loop

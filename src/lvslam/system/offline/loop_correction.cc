@@ -1,0 +1,55 @@
+#include "lvslam/system/offline/loop_correction.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lvslam::system {
+
+namespace {
+
+constexpr double kSameTime = 1e-6;  // seconds
+
+}  // namespace
+
+LoopCorrection::LoopCorrection(const loop::LoopClosureResult& result) : times_(result.keyframe_times) {
+  for (std::size_t k = 0; k < result.T_odom_lidar.size(); ++k)
+    corrections_.push_back(result.T_odom_lidar_corrected[k] * result.T_odom_lidar[k].inverse());
+  if (corrections_.empty()) {
+    times_ = {0.0};
+    corrections_ = {Eigen::Isometry3d::Identity()};
+  }
+}
+
+const Eigen::Isometry3d& LoopCorrection::atTime(double t) const {
+  const auto after = std::upper_bound(times_.begin(), times_.end(), t);
+  const auto k = after == times_.begin() ? 0 : static_cast<std::size_t>(after - times_.begin()) - 1;
+  return corrections_[k];
+}
+
+Trajectory correctTrajectory(const Trajectory& refined, const Trajectory& odometry, const LoopCorrection& correction) {
+  Trajectory corrected;
+  corrected.reserve(refined.size());
+  Eigen::Isometry3d T_world_odom = Eigen::Isometry3d::Identity();
+  for (const StampedPose& pose : refined) {
+    const auto at = std::lower_bound(odometry.begin(), odometry.end(), pose.t - kSameTime,
+                                     [](const StampedPose& p, double t) { return p.t < t; });
+    if (at != odometry.end() && std::abs(at->t - pose.t) <= kSameTime)
+      T_world_odom = pose.T_world_frame * at->T_world_frame.inverse();
+    const Eigen::Isometry3d T_odom_sensor = T_world_odom.inverse() * pose.T_world_frame;
+    corrected.push_back({pose.t, T_world_odom * correction.atTime(pose.t) * T_odom_sensor});
+  }
+  return corrected;
+}
+
+std::vector<PlyPoint> correctMap(const std::vector<PlyPoint>& map, const std::vector<std::size_t>& starts,
+                                 const LoopCorrection& correction) {
+  std::vector<PlyPoint> moved = map;
+  for (std::size_t k = 0; k < starts.size() && k < correction.keyframes(); ++k) {
+    const std::size_t end = k + 1 < starts.size() ? starts[k + 1] : moved.size();
+    const Eigen::Isometry3f D = correction.ofKeyframe(k).cast<float>();
+    for (std::size_t i = starts[k]; i < end && i < moved.size(); ++i) moved[i].p = D * moved[i].p;
+  }
+  return moved;
+}
+
+}  // namespace lvslam::system

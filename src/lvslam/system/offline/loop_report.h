@@ -1,0 +1,15 @@
+#pragma once
+// What loop closure reports: the `loop` section of stats.json (the
+// keyframes, every loop candidate a keyframe found with its figures:
+// descriptor, ICP, the graph's weight, and why it was rejected; how far the
+// graph moved the keyframes) and one line for the console.
+#include <string>
+
+#include "lvslam/loop/loop_closure.h"
+
+namespace lvslam::system {
+
+std::string loopJson(const loop::LoopClosureResult& result);
+std::string formatLoopSummary(const loop::LoopClosureResult& result);
+
+}  // namespace lvslam::system

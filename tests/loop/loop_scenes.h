@@ -1,0 +1,22 @@
+#pragma once
+// Scans of the loop tests: the synthetic hall of tests/lidar and a second,
+// different place, seen by a static sensor and classified by the LiDAR
+// subsystem as a keyframe would be.
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "lidar/synthetic_lidar.h"
+#include "lvslam/lidar/feature_point.h"
+
+namespace lvslam::testing {
+
+// An L-shaped 16 x 10 m store room with shelves and columns, nothing like structuredRoom().
+SyntheticScene storeRoom();
+
+// The LiDAR features of a static scan from T_world_lidar (LiDAR frame).
+std::vector<lidar::FeaturePoint> keyframeFeatures(const SyntheticScene& scene, const Eigen::Isometry3d& T_world_lidar);
+
+std::vector<Eigen::Vector3f> positionsOf(const std::vector<lidar::FeaturePoint>& points);
+
+}  // namespace lvslam::testing
