@@ -42,6 +42,7 @@ void OnlineStage::runReady() {
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - arrivals_[index]).count();
     frames_.push_back(std::move(frame));
     pending_.erase(next);
+    if (listener_) listener_(frames_.back());
   }
 }
 

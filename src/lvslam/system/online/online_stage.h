@@ -7,6 +7,7 @@
 // time minus the frame's arrival). Thread-safe; the order of the outputs
 // never depends on thread timing.
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -33,6 +34,9 @@ class OnlineStage {
   void finish(const std::vector<VisualFrameRecord>& visual, const std::vector<LidarFrameRecord>& lidar);
 
   std::vector<FrameOutput> takeFrames();
+  // Called with each frame's output as it is made, in frame order (from
+  // whichever thread completed the frame, under the stage's lock).
+  void onFrameOutput(std::function<void(const FrameOutput&)> listener) { listener_ = std::move(listener); }
   const OnlineOutput& output() const { return *output_; }
 
  private:
@@ -48,6 +52,7 @@ class OnlineStage {
   std::map<std::size_t, Pending> pending_;
   std::vector<std::chrono::steady_clock::time_point> arrivals_;
   std::vector<FrameOutput> frames_;
+  std::function<void(const FrameOutput&)> listener_;
 };
 
 }  // namespace lvslam::system
