@@ -65,26 +65,31 @@ bool grow(std::vector<std::uint8_t>& out, std::size_t declared) {
   return true;
 }
 
+// LZ4 writes no more than 255 bytes per input byte (a match length extends
+// by 255 a byte), so more than that is not allocated whatever the header claims.
+constexpr std::size_t kLz4MaxRatio = 256;
+
 // Decompresses as much of `in` as is intact into `out` (a cut-off chunk gives
 // its first blocks); `whole` says whether the stream ended as it should.
+// roslz4 keeps a block whose output does not fit and says ROSLZ4_OUTPUT_SMALL,
+// so the output buffer is sized once, not grown.
 void decompressLz4(std::vector<std::uint8_t>& in, std::size_t declared, std::vector<std::uint8_t>& out, bool& whole) {
   roslz4_stream stream{};
   whole = false;
-  out.clear();
-  if (roslz4_decompressStart(&stream) != ROSLZ4_OK) return;
+  out.assign(std::min(declared, kLz4MaxRatio * in.size()), 0);
+  if (roslz4_decompressStart(&stream) != ROSLZ4_OK) {
+    out.clear();
+    return;
+  }
   stream.input_next = reinterpret_cast<char*>(in.data());
   stream.input_left = static_cast<int>(in.size());
-  std::size_t produced = 0;
+  stream.output_next = reinterpret_cast<char*>(out.data());
+  stream.output_left = static_cast<int>(out.size());
   int ret = ROSLZ4_OK;
-  while (ret == ROSLZ4_OK && stream.input_left > 0 && grow(out, declared)) {
-    stream.output_next = reinterpret_cast<char*>(out.data() + produced);
-    stream.output_left = static_cast<int>(out.size() - produced);
-    while (ret == ROSLZ4_OK && stream.input_left > 0 && stream.output_left > 0) ret = roslz4_decompress(&stream);
-    produced = out.size() - static_cast<std::size_t>(stream.output_left);
-  }
-  if (ret == ROSLZ4_OK && produced == declared) ret = roslz4_decompress(&stream);  // reads the checksum
+  while (ret == ROSLZ4_OK && stream.input_left > 0 && stream.output_left > 0) ret = roslz4_decompress(&stream);
+  if (ret == ROSLZ4_OK && stream.output_left == 0) ret = roslz4_decompress(&stream);  // reads the checksum
   whole = ret == ROSLZ4_STREAM_END;
-  out.resize(produced);
+  out.resize(out.size() - static_cast<std::size_t>(stream.output_left));
   roslz4_decompressEnd(&stream);
 }
 
