@@ -15,6 +15,7 @@
 
 #include "io/rosbag_test_messages.h"  // tests/: messages built field by field, rosbag::Bag
 #include "lvslam/eval/json_writer.h"
+#include "lvslam/io/ply_writer.h"
 #include "lvslam/io/scan_file.h"
 #include "lvslam/io/sequence_info.h"
 #include "lvslam/io/tum.h"
@@ -118,6 +119,20 @@ void writeTextSeeds(const fs::path& corpus) {
              "1 0 0 0 0 1 0 0 0 0 1 0\n1 0 0 1 0 1 0 0 0 0 1 0\n--- times\n0.0\n1.0e-1\n");
 }
 
+// The ply harness's first byte: 0 reads a point cloud, 1 line segments.
+void writePlySeeds(const fs::path& corpus, const fs::path& scratch) {
+  const std::vector<lvslam::PlyPoint> points = {{{1.0f, 2.0f, -0.5f}, 0.25f}, {{-3.0f, 0.5f, 1.5f}, 1.0f}};
+  lvslam::writePointCloudPly((scratch / "lvslam-corpus-map.ply").string(), points);
+  writeBytes(corpus / "ply" / "map.ply", std::string(1, '\0') + slurp(scratch / "lvslam-corpus-map.ply"));
+  lvslam::PlySegment segment;
+  segment.a = {0.0, 1.0, 2.0};
+  segment.b = {1.5, -1.0, 2.5};
+  lvslam::writeLineSegmentsPly((scratch / "lvslam-corpus-lines.ply").string(), {segment, segment});
+  writeBytes(corpus / "ply" / "lines.ply", std::string(1, '\1') + slurp(scratch / "lvslam-corpus-lines.ply"));
+  fs::remove(scratch / "lvslam-corpus-map.ply");
+  fs::remove(scratch / "lvslam-corpus-lines.ply");
+}
+
 void writeScanSeeds(const fs::path& corpus) {
   // The harness's first bytes: the field count (3 + b % 6), then each field's
   // index in its name list (x y z intensity time ring pad tiem).
@@ -189,11 +204,12 @@ int main(int argc, char** argv) {
   }
   const fs::path corpus = argv[1];
   for (const char* name : {"sequence_yaml", "sensor_preset", "config_yaml", "times_file", "scan_file", "tum",
-                           "kitti_poses", "json", "pointcloud2", "png_image", "ros_image", "bag_records"})
+                           "kitti_poses", "json", "ply", "pointcloud2", "png_image", "ros_image", "bag_records"})
     fs::create_directories(corpus / name);
   writeYamlSeeds(corpus, argv[2]);
   writeTextSeeds(corpus);
   writeScanSeeds(corpus);
+  writePlySeeds(corpus, fs::temp_directory_path());
   writeRosSeeds(corpus);
   std::cout << "seed corpus written to " << corpus.string() << "\n";
   return 0;
