@@ -29,6 +29,7 @@ found=0
 for h in "${harnesses[@]}"; do
   work="$build/fuzz-work/$h"
   mkdir -p "$work/corpus" "$work/findings"
+  touch "$work/started"  # findings of earlier runs stay, but are not counted again
   # New inputs go to the first folder (the build's); the repository's seeds are read only.
   set +e
   nice -n 15 "$build/bin/fuzz_$h" -max_total_time="$seconds" -runs="$runs" -timeout=10 -rss_limit_mb=2048 \
@@ -37,7 +38,7 @@ for h in "${harnesses[@]}"; do
   set -e
   execs=$(awk '/stat::number_of_executed_units/ {print $2}' "$work/log")
   rate=$(awk '/stat::average_exec_per_sec/ {print $2}' "$work/log")
-  findings=$(find "$work/findings" -type f | wc -l)
+  findings=$(find "$work/findings" -type f -newer "$work/started" | wc -l)
   if [ "$rc" -ne 0 ] && [ "$findings" -eq 0 ]; then findings="rc=$rc"; fi
   [ "$findings" != 0 ] && found=1
   printf '%-14s %12s %9s %9s %s\n' "$h" "${execs:-?}" "${rate:-?}" "$findings" "$work/log"

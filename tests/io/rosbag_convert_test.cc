@@ -399,6 +399,14 @@ TEST(RosbagConvertBadInput, CloudWithoutXNamesBagTopicAndField) {
   bad_field.fields[5].offset = 30;  // time: float32 at 30 runs past point_step 32
   const std::string bag3 = writeOneMessageBag(dir3, "/velodyne_points", bad_field);
   expectMentions(convertError(bag3, "/velodyne_points", "", dir3), {bag3, "/velodyne_points", "'time'"});
+
+  testing::TempDir dir4;
+  rosmsg::PointCloud2 overlapping = testing::velodyneCloud(kT0, sweep(1, false));
+  overlapping.height = 1000000;  // rows of no length: a few bytes would claim a million sweeps (found by fuzzing)
+  overlapping.row_step = 0;
+  const std::string bag4 = writeOneMessageBag(dir4, "/velodyne_points", overlapping);
+  expectMentions(convertError(bag4, "/velodyne_points", "", dir4),
+                 {bag4, "/velodyne_points", "row_step 0 is shorter than a row of 200 points of point_step 32"});
 }
 
 // ---- The two sensors' clocks checked against each other as a bag is read
