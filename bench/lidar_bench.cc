@@ -42,7 +42,7 @@ void BM_LidarFeatureExtraction(benchmark::State& state) {
   const std::vector<LidarScan> scans = driveScans(1);
   const lidar::LidarOdometryConfig config;
   for (auto _ : state) {
-    const auto points = lidar::cropAndDownsample(scans.front(), config.preprocess);
+    const auto points = lidar::cropAndDownsample(scans.front(), config.preprocess, config.features.neighbour_radius);
     benchmark::DoNotOptimize(lidar::extractFeatures(points, config.ground, config.features));
   }
   state.counters["scans_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);

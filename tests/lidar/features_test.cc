@@ -76,7 +76,7 @@ TEST(ExtractFeatures, ScannedFloorWallAndPoleAreGroundFacadeAndPillar) {
   for (const double candidate_voxel : {0.0, 0.3}) {
     LidarOdometryConfig config;
     config.features.candidate_voxel = candidate_voxel;
-    const auto features = extractFeatures(cropAndDownsample(scan, config.preprocess), config.ground, config.features);
+    const auto features = extractFeatures(cropAndDownsample(scan, config.preprocess, config.features.neighbour_radius), config.ground, config.features);
     std::map<std::string, std::pair<int, int>> right_of;  // surface -> (right class and direction, total)
     for (const FeaturePoint& fp : features) {
       const Eigen::Vector3f w = (T_world_lidar.cast<float>() * fp.p);
@@ -106,7 +106,7 @@ TEST(Preprocess, DropsInvalidAndOutOfRangeReturns) {
                                    Eigen::Vector3f(5, 0, 0), Eigen::Vector3f(5.01f, 0, 0), Eigen::Vector3f(0, 7, 0)})
     scan.points.push_back({p, 0.0f, 0.01f, 0});
   scan.points.push_back({Eigen::Vector3f(0, 0, 9), 0.0f, 1e6f, 0});  // corrupt time
-  const auto kept = cropAndDownsample(scan, PreprocessConfig{});
+  const auto kept = cropAndDownsample(scan, PreprocessConfig{}, 0.0);
   ASSERT_EQ(kept.size(), 2u);  // (5,0,0) and (5.01,0,0) share a voxel
   EXPECT_EQ(kept[0].p, Eigen::Vector3f(5, 0, 0));
   EXPECT_EQ(kept[1].p, Eigen::Vector3f(0, 7, 0));

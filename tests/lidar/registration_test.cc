@@ -19,7 +19,7 @@ FeatureFrame staticFrame(const testing::SyntheticScene& scene, const Eigen::Isom
   FeatureFrame frame;
   frame.seq = seq;
   frame.T_world_lidar = T_world_lidar;
-  frame.points = extractFeatures(cropAndDownsample(scan, config.preprocess), config.ground, config.features);
+  frame.points = extractFeatures(cropAndDownsample(scan, config.preprocess, config.features.neighbour_radius), config.ground, config.features);
   return frame;
 }
 

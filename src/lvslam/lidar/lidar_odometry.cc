@@ -56,7 +56,7 @@ void LidarOdometry::prepare(const LidarScan& scan) {
   // After a gap in time the velocity says nothing about the motion since.
   time_jump_ = has_previous_ && scan.timestamp - previous_time_ > config_.max_time_gap;
   if (time_jump_) velocity_.setZero();
-  std::vector<TimedPoint> points = cropAndDownsample(scan, config_.preprocess);
+  std::vector<TimedPoint> points = cropAndDownsample(scan, config_.preprocess, config_.features.neighbour_radius);
   const bool deskew = config_.deskew && scan.has_time;
   mid_offset_ = deskew ? midOffset(points) : 0.0;
   const Eigen::Isometry3d T_world_mid =

@@ -6,6 +6,8 @@
 
 #include <tsl/robin_set.h>
 
+#include "lvslam/lidar/grazing_returns.h"
+
 namespace lvslam::lidar {
 
 namespace {
@@ -61,7 +63,8 @@ std::vector<TimedPoint> rangeAdaptiveDownsample(const std::vector<TimedPoint>& p
   return kept;
 }
 
-std::vector<TimedPoint> cropAndDownsample(const LidarScan& scan, const PreprocessConfig& config) {
+std::vector<TimedPoint> cropAndDownsample(const LidarScan& scan, const PreprocessConfig& config,
+                                          double ring_neighbour_radius) {
   const float min_sq = static_cast<float>(config.min_range * config.min_range);
   const float max_sq = static_cast<float>(config.max_range * config.max_range);
   std::vector<TimedPoint> cropped;
@@ -74,6 +77,13 @@ std::vector<TimedPoint> cropAndDownsample(const LidarScan& scan, const Preproces
     // A sweep lasts a fraction of a second: other times are corrupt records.
     if (!(std::abs(time) <= kMaxPointTime)) continue;
     cropped.push_back({point.p, time, scan.has_ring ? static_cast<int>(point.ring) : -1});
+  }
+  if (ring_neighbour_radius > 0.0) {
+    const std::vector<bool> grazing = grazingReturns(cropped, ring_neighbour_radius);
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < cropped.size(); ++i)
+      if (!grazing[i]) cropped[kept++] = cropped[i];
+    cropped.resize(kept);
   }
   return rangeAdaptiveDownsample(cropped, config);
 }

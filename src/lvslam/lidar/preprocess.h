@@ -9,9 +9,11 @@
 
 namespace lvslam::lidar {
 
-// Non-finite points and points outside [min_range, max_range] are dropped.
-// Times are zero when the scan has none.
-std::vector<TimedPoint> cropAndDownsample(const LidarScan& scan, const PreprocessConfig& config);
+// Non-finite points and points outside [min_range, max_range] are dropped,
+// and with ring_neighbour_radius > 0 the returns of surfaces nearly parallel
+// to the beam (grazing_returns.h). Times are zero when the scan has none.
+std::vector<TimedPoint> cropAndDownsample(const LidarScan& scan, const PreprocessConfig& config,
+                                          double ring_neighbour_radius);
 
 // Voxel edge used at this range: voxel_size, or the size that the angle
 // voxel_angle_deg spans at the far edge of the point's 5 m range band when larger.

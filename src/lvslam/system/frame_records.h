@@ -44,14 +44,6 @@ struct CameraLine {
   Eigen::Vector3d A = Eigen::Vector3d::Zero(), B = Eigen::Vector3d::Zero();
 };
 
-// What the visual thread hands the fusion framework for one camera frame.
-struct VisualFrameFeatures {
-  std::vector<fusion::ImageSegment> segments;
-  // Keypoints (raw pixels) of a frame that became a keyframe, for LiDAR
-  // depth; empty otherwise.
-  std::vector<Eigen::Vector2d> keyframe_keypoints;
-};
-
 // The fusion framework's answer for one camera frame.
 struct FusionAnswer {
   fusion::FusionResult result;

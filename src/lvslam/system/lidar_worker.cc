@@ -6,7 +6,11 @@
 namespace lvslam::system {
 
 LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibration)
-    : odometry_(config.lidar), keypoint_depth_radius_px_(config.keypoint_depth_radius_px), map_(config.map_voxel) {
+    : odometry_(config.lidar),
+      keypoint_depth_radius_px_(config.keypoint_depth_radius_px),
+      keypoint_depths_from_features_(config.keypoint_depth_source == KeypointDepthSource::kFeatures &&
+                                     config.visual.visual.use_keypoint_depths),
+      map_(config.map_voxel) {
   if (config.mode == RunMode::kFused && calibration.camera) {
     fusion_.emplace(*calibration.camera, calibration.T_camera_lidar, config.fusion);
     fusion_->setLidarFeedback(config.lidar_direction_refinement);
@@ -24,20 +28,19 @@ void LidarWorker::addScan(const LidarScan& scan) {
   scan_pending_ = true;
 }
 
-FusionAnswer LidarWorker::addFrame(double t, const VisualFrameFeatures& features) {
+FusionAnswer LidarWorker::addFrame(double t, const std::vector<fusion::ImageSegment>& segments) {
   LidarFrameRecord record;
   record.t = t;
   FusionAnswer answer;
+  fusion_frame_ = false;
   if (fusion_ && scan_pending_) {
     const Stopwatch watch;
-    fusion::FusionFrameOutput out = fusion_->processImage(t, features.segments, odometry_);
-    if (!features.keyframe_keypoints.empty())
-      answer.keypoint_depths = fusion_->framework().pointDepths(out.T_world_lidar, features.keyframe_keypoints,
-                                                                 keypoint_depth_radius_px_);
+    fusion::FusionFrameOutput out = fusion_->processImage(t, segments, odometry_);
+    fusion_frame_ = true;
+    T_world_lidar_last_frame_ = out.T_world_lidar;
     record.fusion_ms = watch.ms();
     record.lidar_features = out.result.lidar_features;
     record.lidar_points_refined = out.lidar_points_changed;
-    record.keypoint_depths = depthCount(answer.keypoint_depths);
     for (const fusion::FusionLine& line : out.result.lines) record.fusion_lines.push_back({line.A, line.B});
     answer.result = std::move(out.result);
   }
@@ -45,6 +48,16 @@ FusionAnswer LidarWorker::addFrame(double t, const VisualFrameFeatures& features
   frames_.push_back(std::move(record));
   answer.lidar_camera_poses.swap(new_camera_poses_);
   return answer;
+}
+
+std::vector<double> LidarWorker::keypointDepths(const std::vector<Eigen::Vector2d>& keyframe_keypoints) {
+  if (!fusion_frame_ || keyframe_keypoints.empty() || frames_.empty()) return {};
+  const Stopwatch watch;
+  std::vector<double> depths =
+      fusion_->framework().pointDepths(T_world_lidar_last_frame_, keyframe_keypoints, keypoint_depth_radius_px_);
+  frames_.back().fusion_ms += watch.ms();
+  frames_.back().keypoint_depths = depthCount(depths);
+  return depths;
 }
 
 void LidarWorker::finish() {

@@ -27,10 +27,15 @@ class LidarWorker {
   LidarWorker(const SystemConfig& config, const Calibration& calibration);
 
   void addScan(const LidarScan& scan);
-  // The next camera frame at time t. Its features (fused mode) go through
-  // the fusion framework: fusion lines (camera frame at t) and LiDAR depth
-  // for the keyframe keypoints come back.
-  FusionAnswer addFrame(double t, const VisualFrameFeatures& features);
+  // The next camera frame at time t. Its line segments (fused mode, raw
+  // pixels) go through the fusion framework: fusion lines (camera frame at
+  // t) come back, and the camera poses of earlier frames that became known.
+  FusionAnswer addFrame(double t, const std::vector<fusion::ImageSegment>& segments);
+  // Whether the frame just added wants LiDAR depth for the keypoints of a
+  // keyframe (fused mode, system.keypoint_depth_source: features), and that
+  // depth (NaN where none), from the features accumulated at its time.
+  bool answersKeypointDepths() const { return fusion_ && keypoint_depths_from_features_; }
+  std::vector<double> keypointDepths(const std::vector<Eigen::Vector2d>& keyframe_keypoints);
   // The sweep of the last scan has ended (every camera frame of it was
   // added): registers it now rather than when the next scan arrives.
   void endSweep() { registerPending(); }
@@ -57,6 +62,9 @@ class LidarWorker {
   lidar::LidarOdometry odometry_;
   std::optional<fusion::FusionStep> fusion_;
   double keypoint_depth_radius_px_;
+  bool keypoint_depths_from_features_;
+  bool fusion_frame_ = false;  // the last frame went through the fusion framework
+  Eigen::Isometry3d T_world_lidar_last_frame_ = Eigen::Isometry3d::Identity();  // the fusion framework's, at the last frame
   LidarMapExport map_;
   bool scan_pending_ = false;
   double pending_prepare_ms_ = 0.0;

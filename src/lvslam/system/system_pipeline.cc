@@ -31,6 +31,7 @@ struct Workers {
   std::unique_ptr<LidarWorker> lidar;
   std::unique_ptr<VisualWorker> visual;
   std::unique_ptr<visual::FeatureExtractor> extractor;
+  std::optional<PinholeCamera> camera;  // for the fusion framework's segments
 };
 
 Workers makeWorkers(const SensorSource& source, const SystemConfig& config) {
@@ -45,16 +46,21 @@ Workers makeWorkers(const SensorSource& source, const SystemConfig& config) {
   if (want_visual) {
     workers.visual = std::make_unique<VisualWorker>(config, calibration, source.hasLidar());
     workers.extractor = std::make_unique<visual::FeatureExtractor>(config.visual.visual.features, *calibration.camera);
+    workers.camera = *calibration.camera;
   }
   return workers;
 }
 
-// One camera frame's exchange between the threads: the visual thread's line
-// segments to the LiDAR thread, the fusion framework's answer back.
+// One camera frame's exchange between the threads: the extraction thread's
+// line segments to the LiDAR thread (so the sweep's registration never waits
+// for tracking), the keypoints of a new keyframe from the visual thread
+// when the fusion framework gives their depth, and its answer back.
 struct FrameExchange {
-  std::promise<VisualFrameFeatures> segments;
+  std::promise<std::vector<fusion::ImageSegment>> segments;
+  std::promise<std::vector<Eigen::Vector2d>> keyframe_keypoints;
   std::promise<FusionAnswer> fusion;
-  std::future<VisualFrameFeatures> segments_future = segments.get_future();
+  std::future<std::vector<fusion::ImageSegment>> segments_future = segments.get_future();
+  std::future<std::vector<Eigen::Vector2d>> keyframe_keypoints_future = keyframe_keypoints.get_future();
   std::future<FusionAnswer> fusion_future = fusion.get_future();
 };
 using ExchangePtr = std::shared_ptr<FrameExchange>;
@@ -107,6 +113,16 @@ class Failure {
   std::atomic<bool> failed_{false};
 };
 
+// The fusion framework on one camera frame: its segments, then (only when
+// asked for) the keypoints of a new keyframe, whose LiDAR depth comes back too.
+template <typename KeypointsOf>
+FusionAnswer fuseFrame(LidarWorker& worker, double t, const std::vector<fusion::ImageSegment>& segments,
+                       KeypointsOf keyframe_keypoints) {
+  FusionAnswer answer = worker.addFrame(t, segments);
+  if (worker.answersKeypointDepths()) answer.keypoint_depths = worker.keypointDepths(keyframe_keypoints());
+  return answer;
+}
+
 void runLidarJob(LidarWorker& worker, LidarJob& job) {
   if (auto* scan = std::get_if<ScanPtr>(&job)) return worker.addScan(**scan);
   if (std::holds_alternative<SweepEndJob>(job)) return worker.endSweep();
@@ -116,7 +132,9 @@ void runLidarJob(LidarWorker& worker, LidarJob& job) {
     return;
   }
   try {
-    frame.exchange->fusion.set_value(worker.addFrame(frame.t, frame.exchange->segments_future.get()));
+    FrameExchange& exchange = *frame.exchange;
+    exchange.fusion.set_value(fuseFrame(worker, frame.t, exchange.segments_future.get(),
+                                        [&exchange] { return exchange.keyframe_keypoints_future.get(); }));
   } catch (...) {
     failPromise(frame.exchange->fusion, std::current_exception());
     throw;
@@ -130,34 +148,41 @@ VisualFrameJob extractFrame(visual::FeatureExtractor& extractor, const ImageJob&
   return VisualFrameJob{std::move(image), watch.ms(), frame.exchange};
 }
 
-VisualJob extract(visual::FeatureExtractor& extractor, ExtractionJob& job) {
+void failExchange(FrameExchange& exchange, std::exception_ptr error) {
+  failPromise(exchange.segments, error);
+  failPromise(exchange.keyframe_keypoints, error);
+}
+
+VisualJob extract(visual::FeatureExtractor& extractor, const PinholeCamera& camera, ExtractionJob& job) {
   if (auto* scan = std::get_if<ScanPtr>(&job)) return *scan;
   auto& frame = std::get<ImageJob>(job);
   try {
-    return extractFrame(extractor, frame);
+    VisualFrameJob extracted = extractFrame(extractor, frame);
+    if (frame.exchange) frame.exchange->segments.set_value(fusionSegments(extracted.image, camera));
+    return extracted;
   } catch (...) {
-    if (frame.exchange) failPromise(frame.exchange->segments, std::current_exception());
+    if (frame.exchange) failExchange(*frame.exchange, std::current_exception());
     throw;
   }
 }
 
 // Tracks a frame and hands its record to the online output.
-VisualFrameFeatures trackFrame(VisualWorker& worker, VisualFrameJob& frame, OnlineStage& stage) {
-  VisualFrameFeatures features = worker.track(std::move(frame.image), frame.extract_ms);
+std::vector<Eigen::Vector2d> trackFrame(VisualWorker& worker, VisualFrameJob& frame, OnlineStage& stage) {
+  std::vector<Eigen::Vector2d> keyframe_keypoints = worker.track(std::move(frame.image), frame.extract_ms);
   stage.visualReady(worker.frameCount() - 1, worker.lastFrame());
-  return features;
+  return keyframe_keypoints;
 }
 
 void runVisualJob(VisualWorker& worker, VisualJob& job, OnlineStage& stage) {
   if (auto* scan = std::get_if<ScanPtr>(&job)) return worker.addScan(*scan);
   auto& frame = std::get<VisualFrameJob>(job);
   try {
-    VisualFrameFeatures features = trackFrame(worker, frame, stage);
+    std::vector<Eigen::Vector2d> keyframe_keypoints = trackFrame(worker, frame, stage);
     if (!frame.exchange) return;
-    frame.exchange->segments.set_value(std::move(features));
+    frame.exchange->keyframe_keypoints.set_value(std::move(keyframe_keypoints));
     worker.applyFusion(frame.exchange->fusion_future.get());
   } catch (...) {
-    if (frame.exchange) failPromise(frame.exchange->segments, std::current_exception());
+    if (frame.exchange) failPromise(frame.exchange->keyframe_keypoints, std::current_exception());
     throw;
   }
 }
@@ -170,11 +195,10 @@ void abandon(LidarJob& job, std::exception_ptr error) {
 }
 void abandon(VisualJob& job, std::exception_ptr error) {
   if (auto* frame = std::get_if<VisualFrameJob>(&job); frame && frame->exchange)
-    failPromise(frame->exchange->segments, error);
+    failPromise(frame->exchange->keyframe_keypoints, error);
 }
 void abandon(ExtractionJob& job, std::exception_ptr error) {
-  if (auto* frame = std::get_if<ImageJob>(&job); frame && frame->exchange)
-    failPromise(frame->exchange->segments, error);
+  if (auto* frame = std::get_if<ImageJob>(&job); frame && frame->exchange) failExchange(*frame->exchange, error);
 }
 
 template <typename Job, typename Run>
@@ -284,7 +308,7 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
       workerLoop(
           extraction_queue, failure,
           [&](ExtractionJob& job) {
-            VisualJob next = extract(*workers.extractor, job);
+            VisualJob next = extract(*workers.extractor, *workers.camera, job);
             if (!visual_queue.push(std::move(next))) abandon(next, failure.first());
           },
           close_all);
@@ -302,7 +326,7 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
   };
   const auto toVisual = [&](ExtractionJob job) {
     if (threaded) return extraction_queue.push(std::move(job));
-    VisualJob extracted = extract(*workers.extractor, job);
+    VisualJob extracted = extract(*workers.extractor, *workers.camera, job);
     runVisualJob(*workers.visual, extracted, stage);
     return true;
   };
@@ -359,8 +383,10 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
             workers.lidar && workers.visual && threaded ? std::make_shared<FrameExchange>() : nullptr;
         if (workers.visual && !threaded) {
           VisualFrameJob frame = extractFrame(*workers.extractor, ImageJob{std::move(image), nullptr});
-          const VisualFrameFeatures features = trackFrame(*workers.visual, frame, stage);
-          if (workers.lidar) workers.visual->applyFusion(workers.lidar->addFrame(t, features));
+          const std::vector<fusion::ImageSegment> segments = fusionSegments(frame.image, *workers.camera);
+          const std::vector<Eigen::Vector2d> keyframe_keypoints = trackFrame(*workers.visual, frame, stage);
+          if (workers.lidar)
+            workers.visual->applyFusion(fuseFrame(*workers.lidar, t, segments, [&] { return keyframe_keypoints; }));
         } else {
           if (workers.visual) ok = toVisual(ImageJob{std::move(image), exchange});
           if (ok && workers.lidar) ok = toLidar(LidarFrameJob{t, exchange});

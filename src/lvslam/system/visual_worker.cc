@@ -59,7 +59,7 @@ void VisualWorker::addScan(std::shared_ptr<const LidarScan> scan) {
   if (recent_scans_.size() > 2) recent_scans_.erase(recent_scans_.begin());
 }
 
-VisualFrameFeatures VisualWorker::track(visual::ExtractedImage image, double extract_ms) {
+std::vector<Eigen::Vector2d> VisualWorker::track(visual::ExtractedImage image, double extract_ms) {
   VisualFrameRecord record;
   record.t = image.timestamp;
   record.extract_ms = extract_ms;
@@ -90,12 +90,16 @@ VisualFrameFeatures VisualWorker::track(visual::ExtractedImage image, double ext
     record.hints_ms += depth_watch.ms();
   }
   frames_.push_back(std::move(record));
-  VisualFrameFeatures features;
-  for (const visual::ImageLineSegment& s : slam_.lineSegments()) features.segments.push_back({s.start, s.end});
   // Fused mode with depths from features: the fusion framework answers.
-  if (!depths_from_scans_ && use_keypoint_depths_ && slam_.currentIsKeyframe())
-    features.keyframe_keypoints = slam_.keypointPixels();
-  return features;
+  if (!depths_from_scans_ && use_keypoint_depths_ && slam_.currentIsKeyframe()) return slam_.keypointPixels();
+  return {};
+}
+
+std::vector<fusion::ImageSegment> fusionSegments(const visual::ExtractedImage& image, const PinholeCamera& camera) {
+  std::vector<fusion::ImageSegment> segments;
+  for (const visual::ImageLineSegment& s : visual::rawLineSegments(image.features, camera))
+    segments.push_back({s.start, s.end});
+  return segments;
 }
 
 void VisualWorker::applyFusion(const FusionAnswer& answer) {

@@ -16,6 +16,9 @@
 
 namespace lvslam::system {
 
+// The image's line segments as the fusion framework takes them (raw pixels).
+std::vector<fusion::ImageSegment> fusionSegments(const visual::ExtractedImage& image, const PinholeCamera& camera);
+
 class VisualWorker {
  public:
   // Throws lvslam::Error when the calibration has no camera. With a LiDAR
@@ -24,9 +27,10 @@ class VisualWorker {
 
   // Raw scans, kept (the last two) for the depth hints of the next images.
   void addScan(std::shared_ptr<const LidarScan> scan);
-  // Tracks the next camera frame, extracted (extractImage) in extract_ms;
-  // returns its features for the fusion framework.
-  VisualFrameFeatures track(visual::ExtractedImage image, double extract_ms);
+  // Tracks the next camera frame, extracted (extractImage) in extract_ms.
+  // Returns the keypoints (raw pixels) of a frame that became a keyframe
+  // when their LiDAR depth comes from the fusion framework; else none.
+  std::vector<Eigen::Vector2d> track(visual::ExtractedImage image, double extract_ms);
   // The fusion framework's answer for the frame just tracked.
   void applyFusion(const FusionAnswer& answer);
 

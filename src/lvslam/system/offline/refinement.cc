@@ -36,6 +36,24 @@ Trajectory replayWithFinalPoses(const PipelineRecords& records, const SystemConf
   return refined;
 }
 
+// Frames the replay could not pose (its world starts at the first LiDAR
+// pose that stood after the run: when the sweeps after the first were lost,
+// none does) keep their online pose; both are in the odometry frame.
+Trajectory withOnlineWhereUnrefined(const Trajectory& refined, const Trajectory& online) {
+  Trajectory merged;
+  std::size_t r = 0, o = 0;
+  while (r < refined.size() || o < online.size()) {
+    const bool take_refined = o == online.size() || (r < refined.size() && refined[r].t <= online[o].t);
+    if (take_refined) {
+      if (o < online.size() && online[o].t == refined[r].t) ++o;
+      merged.push_back(refined[r++]);
+    } else {
+      merged.push_back(online[o++]);
+    }
+  }
+  return merged;
+}
+
 // The LiDAR odometry at each camera time as it stands after the run: each
 // frame interpolated between the sweeps around it (the online output had
 // only the sweep covering it).
@@ -51,7 +69,8 @@ Trajectory lidarAtFrames(const PipelineRecords& records, const Eigen::Isometry3d
 Trajectory refineTrajectory(const PipelineRecords& records, const SystemConfig& config,
                             const Eigen::Isometry3d& T_camera_lidar, const Trajectory& online) {
   if (config.mode == RunMode::kLidar) return records.lidar.empty() ? online : lidarAtFrames(records, T_camera_lidar);
-  if (config.mode == RunMode::kFused && !config.paper_output) return smoothFusedGraph(records, config, T_camera_lidar);
+  if (config.mode == RunMode::kFused && !config.paper_output)
+    return withOnlineWhereUnrefined(smoothFusedGraph(records, config, T_camera_lidar), online);
   if (!config.final_map_poses) return online;
   return replayWithFinalPoses(records, config, T_camera_lidar);
 }

@@ -7,6 +7,7 @@
 // keyframe as the keyframe stands at the end (final_visual_poses.h, as
 // ORB-SLAM's SaveTrajectoryTUM). LiDAR mode: each frame interpolated
 // between the registered sweeps around it (online: the sweep covering it).
+// A frame the refinement cannot pose keeps its online pose.
 #include "lvslam/core/trajectory.h"
 #include "lvslam/system/system_config.h"
 #include "lvslam/system/system_pipeline.h"

@@ -13,48 +13,65 @@ void OnlineStage::frameArrived(std::size_t index, std::chrono::steady_clock::tim
 
 void OnlineStage::visualReady(std::size_t index, const VisualFrameRecord& record) {
   const std::lock_guard lock(mutex_);
-  pending_[index].visual = record;
-  pending_[index].visual->result.observations = {};  // replay data: not for the online output
+  VisualFrameRecord& kept = visual_[index] = record;
+  kept.result.observations = {};  // replay data: not for the online output
   runReady();
 }
 
 void OnlineStage::lidarReady(std::size_t index, const LidarFrameRecord& record) {
   const std::lock_guard lock(mutex_);
-  if (index < frames_.size()) {  // out already: a better pose for the estimator's window
-    output_->lidarImproved(index, record);
-    return;
-  }
-  pending_[index].lidar = record;
-  pending_[index].lidar->fusion_lines.clear();
+  lidar_events_.push_back({index, record});
+  lidar_events_.back().record.fusion_lines.clear();
   runReady();
+}
+
+void OnlineStage::emit(const VisualFrameRecord* visual, const LidarFrameRecord* lidar) {
+  FrameOutput frame = output_->add(visual, lidar);
+  const std::size_t index = frames_.size();
+  if (index < arrivals_.size())
+    frame.latency_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - arrivals_[index]).count();
+  frames_.push_back(std::move(frame));
+  visual_.erase(index);
+  if (listener_) listener_(frames_.back());
 }
 
 void OnlineStage::runReady() {
   while (true) {
-    const auto next = pending_.find(frames_.size());
-    if (next == pending_.end()) return;
-    Pending& p = next->second;
-    if ((has_visual_ && !p.visual) || (has_lidar_ && !p.lidar)) return;
-    FrameOutput frame = output_->add(p.visual ? &*p.visual : nullptr, p.lidar ? &*p.lidar : nullptr);
-    const std::size_t index = frames_.size();
-    if (index < arrivals_.size())
-      frame.latency_ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - arrivals_[index]).count();
-    frames_.push_back(std::move(frame));
-    pending_.erase(next);
-    if (listener_) listener_(frames_.back());
+    const std::size_t next = frames_.size();
+    const auto visual = visual_.find(next);
+    if (!has_lidar_) {
+      if (visual == visual_.end()) return;
+      emit(&visual->second, nullptr);
+      continue;
+    }
+    if (lidar_events_.empty()) return;
+    const LidarEvent& event = lidar_events_.front();
+    if (event.index < next) {  // out already: a better pose for the estimator's window
+      output_->lidarImproved(event.index, event.record);
+    } else {
+      if (event.index > next) return;  // a frame the LiDAR never posed: finish() completes it
+      if (has_visual_ && visual == visual_.end()) return;  // later LiDAR records wait for this frame
+      emit(has_visual_ ? &visual->second : nullptr, &event.record);
+    }
+    lidar_events_.pop_front();
   }
 }
 
 void OnlineStage::finish(const std::vector<VisualFrameRecord>& visual, const std::vector<LidarFrameRecord>& lidar) {
   const std::lock_guard lock(mutex_);
   const std::size_t count = has_visual_ ? visual.size() : lidar.size();
-  for (std::size_t i = frames_.size(); i < count; ++i) {
-    Pending& p = pending_[i];
-    if (has_visual_ && !p.visual && i < visual.size()) p.visual = visual[i];
-    if (has_lidar_ && !p.lidar && i < lidar.size()) p.lidar = lidar[i];
-  }
+  for (std::size_t i = frames_.size(); i < count && i < visual.size(); ++i) visual_.try_emplace(i, visual[i]);
   runReady();
+  // Every record is in: a frame whose LiDAR pose never came takes the worker's final one.
+  while (frames_.size() < count) {
+    const std::size_t next = frames_.size();
+    const auto v = visual_.find(next);
+    const bool has_lidar_record = next < lidar.size();
+    if ((has_visual_ && v == visual_.end()) || (has_lidar_ && !has_lidar_record)) return;
+    emit(has_visual_ ? &v->second : nullptr, has_lidar_ ? &lidar[next] : nullptr);
+    runReady();
+  }
 }
 
 std::vector<FrameOutput> OnlineStage::takeFrames() {

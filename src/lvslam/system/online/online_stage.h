@@ -4,9 +4,13 @@
 // order as soon as a frame is complete, so a pose is out as soon as the
 // data fix it: the visual record after tracking, the LiDAR's when the sweep
 // after the frame is registered. Records each frame's latency (output wall
-// time minus the frame's arrival). Thread-safe; the order of the outputs
-// never depends on thread timing.
+// time minus the frame's arrival). Thread-safe; what the output computes
+// never depends on thread timing: the LiDAR's records (first poses and
+// improvements) reach it in the order the LiDAR thread made them, and a
+// frame whose visual record is late holds the LiDAR's later records back,
+// exactly as when both run on one thread.
 #include <chrono>
+#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -40,16 +44,18 @@ class OnlineStage {
   const OnlineOutput& output() const { return *output_; }
 
  private:
-  struct Pending {
-    std::optional<VisualFrameRecord> visual;
-    std::optional<LidarFrameRecord> lidar;
+  struct LidarEvent {
+    std::size_t index = 0;
+    LidarFrameRecord record;
   };
   void runReady();  // with the lock held
+  void emit(const VisualFrameRecord* visual, const LidarFrameRecord* lidar);
 
   std::unique_ptr<OnlineOutput> output_;
   bool has_visual_, has_lidar_;
   std::mutex mutex_;
-  std::map<std::size_t, Pending> pending_;
+  std::map<std::size_t, VisualFrameRecord> visual_;  // ready, not yet out
+  std::deque<LidarEvent> lidar_events_;             // in the LiDAR thread's order
   std::vector<std::chrono::steady_clock::time_point> arrivals_;
   std::vector<FrameOutput> frames_;
   std::function<void(const FrameOutput&)> listener_;

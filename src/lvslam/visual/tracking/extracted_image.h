@@ -4,6 +4,11 @@
 // LSD/LBD features. Split from tracking so that a pipeline can extract frame
 // k+1 on another thread while frame k is tracked; the result does not depend
 // on where it was computed.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "lvslam/core/camera.h"
 #include "lvslam/core/image_frame.h"
 #include "lvslam/visual/feature/feature_extractor.h"
 #include "lvslam/visual/feature/feature_frame.h"
@@ -19,5 +24,15 @@ struct ExtractedImage {
 
 // Throws lvslam::Error on an image of the wrong size or type (FeatureExtractor).
 ExtractedImage extractImage(FeatureExtractor& extractor, const ImageFrame& frame);
+
+// A line segment in raw (distorted) image pixels, as the camera delivered them.
+struct ImageLineSegment {
+  Eigen::Vector2d start = Eigen::Vector2d::Zero(), end = Eigen::Vector2d::Zero();
+};
+
+// The frame's line segments (kept undistorted) back in raw pixels: what the
+// fusion framework projects LiDAR features against. Known once extracted,
+// so the fusion framework need not wait for tracking.
+std::vector<ImageLineSegment> rawLineSegments(const FeatureFrame& features, const PinholeCamera& camera);
 
 }  // namespace lvslam::visual

@@ -442,14 +442,7 @@ std::optional<Eigen::Isometry3d> VisualSlam::relocateInFinalMap(const VisualFram
 }
 
 std::vector<ImageLineSegment> VisualSlam::lineSegments() const {
-  std::vector<ImageLineSegment> out;
-  const PinholeCamera& cam = impl_->camera;
-  const auto raw = [&](const Eigen::Vector2d& px) {
-    const Eigen::Vector3d ray((px.x() - cam.cx()) / cam.fx(), (px.y() - cam.cy()) / cam.fy(), 1.0);
-    return cam.project(ray).value_or(px);
-  };
-  for (const LineSegment& s : impl_->current.features.lines) out.push_back({raw(s.start), raw(s.end)});
-  return out;
+  return rawLineSegments(impl_->current.features, impl_->camera);
 }
 
 int VisualSlam::addFusionLine(int segment, const Eigen::Vector3d& A_camera, const Eigen::Vector3d& B_camera,

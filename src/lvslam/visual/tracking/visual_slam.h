@@ -63,11 +63,6 @@ struct VisualSlamConfig {
   LineDepthCheckConfig depth_check;
 };
 
-// A line segment of the current frame in raw (distorted) image pixels.
-struct ImageLineSegment {
-  Eigen::Vector2d start = Eigen::Vector2d::Zero(), end = Eigen::Vector2d::Zero();
-};
-
 struct VisualFrameResult {
   double timestamp = 0.0;
   TrackingState state = TrackingState::kInitializing;
