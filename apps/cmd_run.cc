@@ -1,7 +1,9 @@
 // `lvslam run`: the system over a recording (a sequence folder, or ROS1 bags
 // with a sensor preset) in mode fused, lidar or visual; writes OUT/
 // trajectory.tum, stats.json, map.ply, lines.ply and report.html and, when
-// there is ground truth, groundtruth.tum and prints the accuracy.
+// there is ground truth, groundtruth.tum and prints the accuracy. A recording
+// that cannot be read to its end is run up to the fault, its outputs
+// written, and the fault then ends the command (exit 2).
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -94,13 +96,26 @@ int runRun(RunArgs args) {
   ProgressLine progress;
   const auto start = std::chrono::steady_clock::now();
   std::optional<double> t0;
-  const system::RunResult run = system::runRecording(recording, config, [&](double t, std::size_t images, std::size_t scans) {
+  const auto showProgress = [&](double t, std::size_t images, std::size_t scans) {
     if (!t0) t0 = t;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     progress.update(fmt::format("[{}] {:.1f} s of data: {} images, {} scans ({:.2f}x real time)", args.mode, t - *t0,
                                 images, scans, wall > 0.0 ? (t - *t0) / wall : 0.0));
+  };
+  // trajectory.tum grows pose by pose as the online output makes them (one
+  // per camera frame; without a camera it is the LiDAR's scan trajectory,
+  // written at the end), so a killed run leaves what it had.
+  std::optional<TumStream> online_poses;
+  if (recording.source->hasCamera()) online_poses.emplace(args.out_dir + "/trajectory.tum");
+  const system::RunResult run = system::runRecording(recording, config, showProgress, [&](const system::FrameOutput& f) {
+    if (online_poses && f.T_world_camera) online_poses->add({f.t, *f.T_world_camera});
   });
+  online_poses.reset();
   progress.finish();
+  // Input that ends in a fault (a cut last scan or image) still gives what was
+  // read before it: the outputs are written, then the fault is the one error line.
+  if (run.output.trajectory.empty()) std::filesystem::remove(args.out_dir + "/trajectory.tum");  // the stream's, empty
+  if (run.output.trajectory.empty() && run.records.input_fault) throw *run.records.input_fault;
   if (run.output.trajectory.empty())
     throw std::runtime_error(fmt::format("no result: mode {} gave no pose from {} images and {} scans", args.mode,
                                          run.summary.images, run.summary.scans));
@@ -122,6 +137,11 @@ int runRun(RunArgs args) {
   else
     std::filesystem::remove(args.out_dir + "/groundtruth.tum");
   writeRunReportOrWarn(args.out_dir);
+  if (run.records.input_fault) {
+    std::cout << fmt::format("the recording could not be read after t = {:.6f}: the outputs hold what came before\n",
+                             run.summary.stopped_after_t);
+    throw *run.records.input_fault;
+  }
   return 0;
 }
 

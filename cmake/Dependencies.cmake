@@ -7,6 +7,7 @@ find_package(fmt REQUIRED)
 find_package(spdlog REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(TBB REQUIRED)
+find_package(nlohmann_json 3.11 REQUIRED)
 find_package(Threads REQUIRED)
 
 # nanoflann and tsl::robin_map are header-only; Debian ships their CMake configs.

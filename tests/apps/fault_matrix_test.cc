@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -284,6 +285,75 @@ TEST(FaultMatrix, EmptyImageIsNamed) {
   TempDir dir;
   expectOneErrorLine(runDamaged(dir, "camera/000005.png", nothing, "visual"), 2,
                      "seq/camera/000005.png: empty file (0 bytes)");
+}
+
+// ---- A recording cut off as a killed recorder leaves it (#32 item 1): the
+// run goes up to the cut, writes everything it has, then names the fault in
+// one line (exit 2).
+
+// The file named on the last line of a times.txt.
+std::string lastFileOf(const std::string& times) {
+  const std::size_t end = times.find_last_not_of('\n');
+  const std::size_t start = times.rfind('\n', end) + 1;
+  const std::string line = times.substr(start, end + 1 - start);
+  return line.substr(line.find(' ') + 1);
+}
+
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// The clean sequence run, then the same with the last file of `sensor` cut in
+// half (both deterministic): the cut run's result and file, both runs' poses.
+struct CutRun {
+  RunResult result;
+  std::string cut_file;
+  std::vector<std::string> clean_poses, poses;
+};
+
+CutRun runCutAtTheEnd(const TempDir& dir, const std::string& sensor) {
+  cleanSequence(dir);
+  const std::string args = " --mode lidar --deterministic";
+  EXPECT_EQ(runWithoutReportNote(dir, "run --sequence seq --out clean" + args).exit_code, 0);
+  CutRun cut;
+  cut.cut_file = "seq/" + sensor + "/" + lastFileOf(slurpBinary(dir.file("seq/" + sensor + "/times.txt")));
+  dir.write(cut.cut_file, half(slurpBinary(dir.file(cut.cut_file))));
+  cut.result = runWithoutReportNote(dir, "run --sequence seq --out out" + args);
+  cut.clean_poses = linesOf(slurpBinary(dir.file("clean/trajectory.tum")));
+  cut.poses = linesOf(slurpBinary(dir.file("out/trajectory.tum")));
+  // stats.json's summary says where the run stopped; the maps are written.
+  const std::string stats = slurpBinary(dir.file("out/stats.json"));
+  EXPECT_NE(stats.find("\"stopped\": {\"where\": \"" + cut.cut_file + "\""), std::string::npos) << stats.substr(0, 2000);
+  EXPECT_TRUE(fs::exists(dir.path() / "out/map.ply"));
+  EXPECT_TRUE(fs::exists(dir.path() / "out/trajectory_refined.tum"));
+  EXPECT_NE(cut.result.out.find("the recording could not be read after t = "), std::string::npos) << cut.result.out;
+  return cut;
+}
+
+TEST(FaultMatrix, ACutLastImageKeepsEveryPoseBeforeIt) {
+  TempDir dir;
+  const CutRun cut = runCutAtTheEnd(dir, "camera");
+  expectOneErrorLine(cut.result, 2, cut.cut_file + ": damaged PNG: the file ends at byte");
+  // Every frame before the cut image has its pose; the online output is
+  // causal, so they are the clean run's poses but the last frame's.
+  ASSERT_GT(cut.clean_poses.size(), 40u);
+  EXPECT_EQ(cut.poses, std::vector<std::string>(cut.clean_poses.begin(), cut.clean_poses.end() - 1));
+}
+
+TEST(FaultMatrix, ACutLastScanKeepsThePosesBeforeIt) {
+  TempDir dir;
+  const CutRun cut = runCutAtTheEnd(dir, "lidar");
+  expectOneErrorLine(cut.result, 2, cut.cut_file + ": size ");
+  // The frames after the last whole scan have no sweep to be posed in; every
+  // pose written is the clean run's up to the frames the last sweep fixed.
+  ASSERT_GT(cut.poses.size(), cut.clean_poses.size() - 5) << "frames of the last sweep at most are missing";
+  ASSERT_LT(cut.poses.size(), cut.clean_poses.size());
+  const std::size_t settled = cut.poses.size() - 2;  // the last frames' poses came from the shorter run's end
+  EXPECT_EQ(std::vector<std::string>(cut.poses.begin(), cut.poses.begin() + settled),
+            std::vector<std::string>(cut.clean_poses.begin(), cut.clean_poses.begin() + settled));
 }
 
 // Every third point of scans 3..9 set to `value` (x, y and z).

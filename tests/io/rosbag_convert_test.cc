@@ -399,6 +399,78 @@ TEST(RosbagConvertBadInput, CloudWithoutXNamesBagTopicAndField) {
   bad_field.fields[5].offset = 30;  // time: float32 at 30 runs past point_step 32
   const std::string bag3 = writeOneMessageBag(dir3, "/velodyne_points", bad_field);
   expectMentions(convertError(bag3, "/velodyne_points", "", dir3), {bag3, "/velodyne_points", "'time'"});
+
+  testing::TempDir dir4;
+  rosmsg::PointCloud2 overlapping = testing::velodyneCloud(kT0, sweep(1, false));
+  overlapping.height = 1000000;  // rows of no length: a few bytes would claim a million sweeps (found by fuzzing)
+  overlapping.row_step = 0;
+  const std::string bag4 = writeOneMessageBag(dir4, "/velodyne_points", overlapping);
+  expectMentions(convertError(bag4, "/velodyne_points", "", dir4),
+                 {bag4, "/velodyne_points", "row_step 0 is shorter than a row of 200 points of point_step 32"});
+}
+
+// ---- The two sensors' clocks checked against each other as a bag is read
+// (#32): clouds at 10 Hz and images at 15 Hz for 2 s, recorded a few ms after
+// their stamps; from image `jump_from` on the camera stamps are shifted by
+// `camera_jump` s (its clock jumped; record times go on), and the images of
+// [gap_from, gap_to) s are not in the bag at all (a drop-out).
+std::string writeTwoClockBag(const testing::TempDir& dir, int jump_from, double camera_jump, double gap_from = 9.0,
+                             double gap_to = 9.0) {
+  const std::string path = dir.file("clocks.bag");
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  for (int i = 0; i < 20; ++i)
+    bag.write("/velodyne_points", testing::rosTime(kT0 + 0.1 * i + 0.104),
+              testing::velodyneCloud(kT0 + 0.1 * i, sweep(70 + i, false)));
+  for (int i = 0; i < 30; ++i) {
+    const double t = kT0 + i / 15.0;
+    if (t - kT0 >= gap_from && t - kT0 < gap_to) continue;
+    const double stamp = i >= jump_from ? t + camera_jump : t;
+    bag.write("/mono", testing::rosTime(t + 0.003), testing::rawImage(stamp, randomImage(CV_8UC1, i), "mono8"));
+  }
+  return path;
+}
+
+// Reads every item of a bag source; returns how many, or throws its error.
+std::size_t readAll(const std::string& bag) {
+  BagSourceOptions options;
+  options.lidar_topic = "/velodyne_points";
+  options.camera_topic = "/mono";
+  BagSource source({bag}, options);
+  std::size_t items = 0;
+  while (source.next()) ++items;
+  return items;
+}
+
+TEST(RosbagClocks, OneSensorsClockJumpIsNamedWithTopicStampAndSize) {
+  testing::TempDir dir;
+  const std::string bag = writeTwoClockBag(dir, 12, 100.0);
+  const std::string message = testing::errorMessageOf([&] { readAll(bag); });
+  EXPECT_NE(message.find(bag + " topic /mono: time stamp " + fmt::format("{:.6f}", kT0 + 12 / 15.0 + 100.0) +
+                         " jumps by +100.000 s against its record time while the stamps of topic /velodyne_points do not"),
+            std::string::npos)
+      << message;
+}
+
+TEST(RosbagClocks, TheLidarsClockJumpIsNamedToo) {
+  testing::TempDir dir;
+  const std::string path = dir.file("clocks.bag");
+  {
+    rosbag::Bag bag(path, rosbag::bagmode::Write);
+    for (int i = 0; i < 20; ++i) {
+      const double t = kT0 + 0.1 * i;
+      bag.write("/velodyne_points", testing::rosTime(t + 0.104),
+                testing::velodyneCloud(i >= 10 ? t + 30.0 : t, sweep(80 + i, false)));
+      bag.write("/mono", testing::rosTime(t + 0.003), testing::rawImage(t, randomImage(CV_8UC1, i), "mono8"));
+    }
+  }
+  const std::string message = testing::errorMessageOf([&] { readAll(path); });
+  EXPECT_NE(message.find(path + " topic /velodyne_points: time stamp "), std::string::npos) << message;
+  EXPECT_NE(message.find("jumps by +30.000 s"), std::string::npos) << message;
+}
+
+TEST(RosbagClocks, ADropOutIsNoClockJump) {
+  testing::TempDir dir;
+  EXPECT_EQ(readAll(writeTwoClockBag(dir, 1000, 0.0, 0.5, 1.5)), 20u + 15u);  // 15 images outside the gap
 }
 
 }  // namespace

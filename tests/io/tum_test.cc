@@ -11,6 +11,32 @@ namespace {
 using testing::errorMessageOf;
 using testing::TempDir;
 
+// Each pose is on disk once added (a killed run leaves them), in writeTum's format.
+TEST(Tum, AStreamHasEachPoseOnDiskAsItIsAdded) {
+  TempDir dir;
+  Trajectory traj;
+  for (int i = 0; i < 3; ++i) {
+    Vector6d xi;
+    xi << 0.5 * i, 0.1, -0.2 * i, 0.01, 0.02 * i, -0.3;
+    traj.push_back({1628249320.5 + 0.1 * i, expSE3(xi)});
+  }
+  writeTum(dir.file("whole.tum"), traj);
+  const std::string whole = testing::slurpBinary(dir.file("whole.tum"));
+  TumStream stream(dir.file("stream.tum"));
+  std::size_t written = 0;
+  for (const StampedPose& pose : traj) {
+    stream.add(pose);
+    written = whole.find('\n', written) + 1;
+    EXPECT_EQ(testing::slurpBinary(dir.file("stream.tum")), whole.substr(0, written));
+  }
+}
+
+TEST(Tum, AStreamThatCannotBeWrittenIsNamed) {
+  TempDir dir;
+  EXPECT_NE(errorMessageOf([&] { TumStream(dir.file("no/such/folder/t.tum")); }).find("no/such/folder/t.tum: cannot write"),
+            std::string::npos);
+}
+
 TEST(Tum, WriteReadRoundTrip) {
   TempDir dir;
   Trajectory traj;

@@ -173,31 +173,36 @@ TEST_P(PipelineModes, CompleteSourceGivesOneRecordPerFrameAndScan) {
   for (const LidarFrameRecord& l : o.records->lidar) EXPECT_TRUE(l.T_odom_lidar.has_value()) << l.t;
 }
 
-TEST_P(PipelineModes, SourceErrorInLidarModeIsRethrown) {
-  FakeSource source(1.0, true, true);
-  source.throwAt(7);
-  const Outcome o = runGuarded(source, configFor(RunMode::kLidar, GetParam()));
-  EXPECT_TRUE(o.lvslam_error) << o.message;
-  EXPECT_EQ(o.message, "fake source: broken item 7");
+// A source that cannot be read further (a cut last scan or image) ends the
+// run there: the records hold every item read before it, each camera frame
+// with its online output, and say why the run stopped.
+void expectStoppedAt(const Outcome& o, std::size_t at) {
+  ASSERT_TRUE(o.records) << at << ": " << o.message;
+  ASSERT_TRUE(o.records->input_fault) << at;
+  EXPECT_STREQ(o.records->input_fault->what(), ("fake source: broken item " + std::to_string(at)).c_str());
+  EXPECT_EQ(o.records->images + o.records->scans_read, at);
+  EXPECT_EQ(o.records->online.size(), o.records->images) << at;
 }
 
-TEST_P(PipelineModes, SourceErrorInFusedModeIsRethrown) {
+TEST_P(PipelineModes, SourceErrorInLidarModeStopsTheRunThere) {
+  FakeSource source(1.0, true, true);
+  source.throwAt(7);
+  expectStoppedAt(runGuarded(source, configFor(RunMode::kLidar, GetParam())), 7);
+}
+
+TEST_P(PipelineModes, SourceErrorInFusedModeStopsTheRunThere) {
   for (const std::size_t at : {0u, 1u, 6u, 13u, 24u}) {  // first item, first image, mid-run, last item
     FakeSource source(1.0, true, true);
     ASSERT_EQ(source.size(), 25u);
     source.throwAt(at);
-    const Outcome o = runGuarded(source, configFor(RunMode::kFused, GetParam()));
-    EXPECT_TRUE(o.lvslam_error) << at << ": " << o.message;
-    EXPECT_EQ(o.message, "fake source: broken item " + std::to_string(at));
+    expectStoppedAt(runGuarded(source, configFor(RunMode::kFused, GetParam())), at);
   }
 }
 
-TEST_P(PipelineModes, SourceErrorInVisualModeIsRethrown) {
+TEST_P(PipelineModes, SourceErrorInVisualModeStopsTheRunThere) {
   FakeSource source(1.0, true, false);
   source.throwAt(5);
-  const Outcome o = runGuarded(source, configFor(RunMode::kVisual, GetParam()));
-  EXPECT_TRUE(o.lvslam_error) << o.message;
-  EXPECT_EQ(o.message, "fake source: broken item 5");
+  expectStoppedAt(runGuarded(source, configFor(RunMode::kVisual, GetParam())), 5);
 }
 
 TEST_P(PipelineModes, WrongImageSizeInFusedModeFailsTheRun) {

@@ -113,6 +113,10 @@ CloudLayout findLayout(const rosmsg::PointCloud2& cloud, const std::string& wher
 
 void checkDataSize(const rosmsg::PointCloud2& cloud, const CloudLayout& layout, const std::string& where) {
   if (cloud.width == 0 || cloud.height == 0) return;
+  // Rows that overlap would let a few bytes claim any number of points.
+  if (cloud.height > 1 && cloud.row_step < static_cast<std::uint64_t>(cloud.width) * cloud.point_step)
+    throw Error(where, fmt::format("PointCloud2 row_step {} is shorter than a row of {} points of point_step {}",
+                                   cloud.row_step, cloud.width, cloud.point_step));
   const std::uint64_t needed = static_cast<std::uint64_t>(cloud.height - 1) * cloud.row_step +
                                static_cast<std::uint64_t>(cloud.width - 1) * cloud.point_step + layout.end;
   if (needed > cloud.data.size())

@@ -3,6 +3,7 @@
 #include <bzlib.h>
 #include <roslz4/lz4s.h>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 
@@ -19,8 +20,9 @@ constexpr std::uint8_t kOpMessageData = 0x02;
 constexpr std::uint8_t kOpChunk = 0x05;
 constexpr std::uint8_t kOpConnection = 0x07;
 constexpr char kMagic[] = "#ROSBAG V2.0\n";
-// A chunk larger than this is taken as damage rather than allocated.
-constexpr std::uint64_t kMaxChunkBytes = std::uint64_t{1} << 31;
+// A chunk larger than this is taken as damage rather than decompressed
+// (rosbag record writes 768 KiB chunks unless told otherwise).
+constexpr std::uint64_t kMaxChunkBytes = std::uint64_t{1} << 28;
 
 std::uint32_t readU32(const std::uint8_t* p) {
   std::uint32_t v = 0;
@@ -54,12 +56,31 @@ std::optional<std::uint32_t> fieldU32(const Fields& fields, const std::string& n
   return readU32(reinterpret_cast<const std::uint8_t*>(it->second.data()));
 }
 
-// Decompresses as much of `in` as is intact (a cut-off chunk gives its first
-// blocks); `whole` says whether the stream ended as it should.
-std::size_t decompressLz4(std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& out, bool& whole) {
+// Room for more output, doubled each time up to `declared` (the size the
+// chunk header claims): a corrupt header must not allocate gigabytes before
+// the data show they decompress to that much. False when full at `declared`.
+bool grow(std::vector<std::uint8_t>& out, std::size_t declared) {
+  if (out.size() >= declared) return false;
+  out.resize(std::min<std::size_t>(declared, std::max<std::size_t>(out.size() * 2, 1 << 16)));
+  return true;
+}
+
+// LZ4 writes no more than 255 bytes per input byte (a match length extends
+// by 255 a byte), so more than that is not allocated whatever the header claims.
+constexpr std::size_t kLz4MaxRatio = 256;
+
+// Decompresses as much of `in` as is intact into `out` (a cut-off chunk gives
+// its first blocks); `whole` says whether the stream ended as it should.
+// roslz4 keeps a block whose output does not fit and says ROSLZ4_OUTPUT_SMALL,
+// so the output buffer is sized once, not grown.
+void decompressLz4(std::vector<std::uint8_t>& in, std::size_t declared, std::vector<std::uint8_t>& out, bool& whole) {
   roslz4_stream stream{};
   whole = false;
-  if (roslz4_decompressStart(&stream) != ROSLZ4_OK) return 0;
+  out.assign(std::min(declared, kLz4MaxRatio * in.size()), 0);
+  if (roslz4_decompressStart(&stream) != ROSLZ4_OK) {
+    out.clear();
+    return;
+  }
   stream.input_next = reinterpret_cast<char*>(in.data());
   stream.input_left = static_cast<int>(in.size());
   stream.output_next = reinterpret_cast<char*>(out.data());
@@ -68,25 +89,28 @@ std::size_t decompressLz4(std::vector<std::uint8_t>& in, std::vector<std::uint8_
   while (ret == ROSLZ4_OK && stream.input_left > 0 && stream.output_left > 0) ret = roslz4_decompress(&stream);
   if (ret == ROSLZ4_OK && stream.output_left == 0) ret = roslz4_decompress(&stream);  // reads the checksum
   whole = ret == ROSLZ4_STREAM_END;
-  const std::size_t produced = out.size() - static_cast<std::size_t>(stream.output_left);
+  out.resize(out.size() - static_cast<std::size_t>(stream.output_left));
   roslz4_decompressEnd(&stream);
-  return produced;
 }
 
-std::size_t decompressBz2(std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& out, bool& whole) {
+void decompressBz2(std::vector<std::uint8_t>& in, std::size_t declared, std::vector<std::uint8_t>& out, bool& whole) {
   bz_stream stream{};
   whole = false;
-  if (BZ2_bzDecompressInit(&stream, 0, 0) != BZ_OK) return 0;
+  out.clear();
+  if (BZ2_bzDecompressInit(&stream, 0, 0) != BZ_OK) return;
   stream.next_in = reinterpret_cast<char*>(in.data());
   stream.avail_in = static_cast<unsigned>(in.size());
-  stream.next_out = reinterpret_cast<char*>(out.data());
-  stream.avail_out = static_cast<unsigned>(out.size());
+  std::size_t produced = 0;
   int ret = BZ_OK;
-  while (ret == BZ_OK && stream.avail_in > 0 && stream.avail_out > 0) ret = BZ2_bzDecompress(&stream);
+  while (ret == BZ_OK && stream.avail_in > 0 && grow(out, declared)) {
+    stream.next_out = reinterpret_cast<char*>(out.data() + produced);
+    stream.avail_out = static_cast<unsigned>(out.size() - produced);
+    while (ret == BZ_OK && stream.avail_in > 0 && stream.avail_out > 0) ret = BZ2_bzDecompress(&stream);
+    produced = out.size() - stream.avail_out;
+  }
   whole = ret == BZ_STREAM_END;
-  const std::size_t produced = out.size() - stream.avail_out;
+  out.resize(produced);
   BZ2_bzDecompressEnd(&stream);
-  return produced;
 }
 
 }  // namespace
@@ -153,9 +177,11 @@ bool BagRecordScanner::loadChunk(const std::vector<std::uint8_t>& header, std::v
   if (compression == "none") {
     chunk_ = std::move(data);
   } else if (compression == "lz4" || compression == "bz2") {
-    chunk_.assign(*size, 0);
     bool whole = false;
-    chunk_.resize(compression == "lz4" ? decompressLz4(data, chunk_, whole) : decompressBz2(data, chunk_, whole));
+    if (compression == "lz4")
+      decompressLz4(data, *size, chunk_, whole);
+    else
+      decompressBz2(data, *size, chunk_, whole);
     // A whole chunk that does not decompress is damaged inside: none of its
     // messages can be trusted, so reading stops before it.
     if (!whole && damage_.empty()) {

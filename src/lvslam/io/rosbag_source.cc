@@ -1,6 +1,7 @@
 #include "lvslam/io/rosbag_source.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -76,6 +77,8 @@ class BagSource::TopicStream {
 
   const std::optional<SensorData>& peek() const { return pending_; }
   std::optional<SensorData> pop() {
+    popped_offset_ = pending_offset_;
+    have_popped_ = true;
     std::optional<SensorData> out = std::move(pending_);
     pending_.reset();
     fill();
@@ -83,6 +86,12 @@ class BagSource::TopicStream {
   }
   const LidarInfo& lidarInfo() const { return lidar_; }
   std::size_t skipped() const { return skipped_; }
+  const std::string& topic() const { return topic_; }
+  const std::string& pendingFile() const { return pending_file_; }
+  // Stamp minus record time of the message ahead, and of the one popped last
+  // (the message ahead's when none was popped yet).
+  double pendingOffset() const { return pending_offset_; }
+  double poppedOffset() const { return have_popped_ ? popped_offset_ : pending_offset_; }
 
  private:
   std::optional<BagMessage> nextMessage() {
@@ -137,6 +146,8 @@ class BagSource::TopicStream {
       last_t_ = t;
       have_last_ = true;
       pending_ = std::move(d);
+      pending_offset_ = t - m->record_time;
+      pending_file_ = bag_->path();
     }
   }
 
@@ -145,6 +156,9 @@ class BagSource::TopicStream {
   std::size_t next_file_ = 0;
   std::unique_ptr<RosbagReader> bag_;
   std::optional<SensorData> pending_;
+  std::string pending_file_;
+  double pending_offset_ = 0.0, popped_offset_ = 0.0;
+  bool have_popped_ = false;
   double last_t_ = 0.0;
   bool have_last_ = false;
   bool first_scan_seen_ = false;
@@ -162,9 +176,29 @@ BagSource::BagSource(const std::vector<std::string>& files, const BagSourceOptio
 
 BagSource::~BagSource() = default;
 
+// Compares the two messages ahead: their stamps' offsets to the record time
+// keep their difference unless a clock jumped; the stream whose offset moved
+// from its own last one is the one that jumped.
+void BagSource::checkClocks() {
+  const double difference = lidar_->pendingOffset() - camera_->pendingOffset();
+  if (clock_difference_ && std::abs(difference - *clock_difference_) > kMaxClockStep) {
+    const double lidar_step = lidar_->pendingOffset() - lidar_->poppedOffset();
+    const double camera_step = camera_->pendingOffset() - camera_->poppedOffset();
+    const bool camera_jumped = std::abs(camera_step) > std::abs(lidar_step);
+    const TopicStream& jumped = camera_jumped ? *camera_ : *lidar_;
+    const TopicStream& other = camera_jumped ? *lidar_ : *camera_;
+    throw Error(fmt::format("{} topic {}", jumped.pendingFile(), jumped.topic()),
+                fmt::format("time stamp {:.6f} jumps by {:+.3f} s against its record time while the stamps of topic {} "
+                            "do not: one sensor's clock jumped, and stamps that no longer agree cannot be merged",
+                            stampOf(*jumped.peek()), camera_jumped ? camera_step : lidar_step, other.topic()));
+  }
+  clock_difference_ = difference;
+}
+
 std::optional<SensorData> BagSource::next() {
   const bool lidar_ready = lidar_ && lidar_->peek();
   const bool camera_ready = camera_ && camera_->peek();
+  if (lidar_ready && camera_ready) checkClocks();
   if (lidar_ready && camera_ready)  // a scan before an image at the same stamp, as SequenceReader
     return stampOf(*lidar_->peek()) <= stampOf(*camera_->peek()) ? lidar_->pop() : camera_->pop();
   if (lidar_ready) return lidar_->pop();

@@ -29,7 +29,14 @@ class BagSource : public SensorSource {
 
   // Throws lvslam::Error naming bag, topic and field on a malformed message.
   // Messages whose stamp does not increase on their topic are skipped (warned).
+  // The two topics' clocks are checked against each other as the messages
+  // arrive: each stamp against its record time (the recorder's clock, the
+  // same for both); when one topic's stamps move by more than kMaxClockStep
+  // against it and the other's do not, that sensor's clock jumped and
+  // next() throws lvslam::Error naming the bag, the topic, the stamp and the
+  // size of the jump (a drop-out moves stamps and record times together).
   std::optional<SensorData> next() override;
+  static constexpr double kMaxClockStep = 1.0;  // s: far above transport delay jitter
   Calibration calibration() const override { return options_.calibration; }
   bool hasCamera() const override { return !options_.camera_topic.empty(); }
   bool hasLidar() const override { return !options_.lidar_topic.empty(); }
@@ -43,9 +50,11 @@ class BagSource : public SensorSource {
 
  private:
   class TopicStream;
+  void checkClocks();
   BagSourceOptions options_;
   std::vector<std::string> files_;
   std::unique_ptr<TopicStream> lidar_, camera_;
+  std::optional<double> clock_difference_;  // LiDAR minus camera stamp-to-record offset, as last seen
 };
 
 std::unique_ptr<SensorSource> openBagSource(const std::vector<std::string>& files, const BagSourceOptions& options);

@@ -44,6 +44,14 @@ void checkIncreasing(const std::string& path, int line_no, const Trajectory& tra
                                                formatTimestamp(t), formatTimestamp(traj.back().t)));
 }
 
+std::string tumLine(const StampedPose& sp) {
+  Eigen::Quaterniond q(sp.T_world_frame.linear());
+  q.normalize();
+  const Eigen::Vector3d t = sp.T_world_frame.translation();
+  return fmt::format("{} {:.9f} {:.9f} {:.9f} {:.9f} {:.9f} {:.9f} {:.9f}\n", formatTimestamp(sp.t), t.x(), t.y(),
+                     t.z(), q.x(), q.y(), q.z(), q.w());
+}
+
 }  // namespace
 
 Trajectory readTum(const std::string& path) {
@@ -67,14 +75,17 @@ Trajectory readTum(const std::string& path) {
 void writeTum(const std::string& path, const Trajectory& trajectory) {
   std::ofstream out(path);
   if (!out) throw Error(path, "cannot write file");
-  for (const auto& sp : trajectory) {
-    Eigen::Quaterniond q(sp.T_world_frame.linear());
-    q.normalize();
-    const Eigen::Vector3d t = sp.T_world_frame.translation();
-    out << fmt::format("{} {:.9f} {:.9f} {:.9f} {:.9f} {:.9f} {:.9f} {:.9f}\n", formatTimestamp(sp.t),
-                       t.x(), t.y(), t.z(), q.x(), q.y(), q.z(), q.w());
-  }
+  for (const auto& sp : trajectory) out << tumLine(sp);
   if (!out) throw Error(path, "write failed");
+}
+
+TumStream::TumStream(const std::string& path) : path_(path), out_(path) {
+  if (!out_) throw Error(path, "cannot write file");
+}
+
+void TumStream::add(const StampedPose& pose) {
+  out_ << tumLine(pose) << std::flush;
+  if (!out_) throw Error(path_, "write failed");
 }
 
 Trajectory readKittiPoses(const std::string& path, const std::string& times_path) {

@@ -11,7 +11,7 @@
 #include "lvslam/io/ply_reader.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/report/html_page.h"
-#include "lvslam/report/json_value.h"
+#include "lvslam/report/json_reader.h"
 #include "lvslam/report/report_json.h"
 
 namespace lvslam::report {
@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 // stats.json as text (inlined as it is), after checking that it parses and
 // holds what the page draws.
-std::string readStats(const fs::path& path, JsonValue& stats) {
+std::string readStats(const fs::path& path, nlohmann::json& stats) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path.string(), "cannot read the file (is this a folder `lvslam run` wrote?)");
   std::stringstream buffer;
@@ -30,18 +30,18 @@ std::string readStats(const fs::path& path, JsonValue& stats) {
   const std::string text = buffer.str();
   stats = parseJson(text, path.string());
   for (const char* key : {"summary", "frames", "scans", "switches"})
-    if (!stats.find(key)) throw Error(path.string(), std::string("no \"") + key + "\" field");
-  if (!stats.find("summary")->isObject()) throw Error(path.string(), "\"summary\" is not an object");
+    if (!findMember(stats, key)) throw Error(path.string(), std::string("no \"") + key + "\" field");
+  if (!stats.at("summary").is_object()) throw Error(path.string(), "\"summary\" is not an object");
   return text;
 }
 
 // The alignment stats.json's accuracy used (sim3 for a visual run without
 // metric scale), so the page's figures are the run's.
-eval::Alignment alignmentOf(const JsonValue& stats) {
-  const JsonValue* accuracy = stats.find("summary")->find("accuracy");
-  const JsonValue* align = accuracy ? accuracy->find("align") : nullptr;
-  if (align && align->string == "sim3") return eval::Alignment::kSim3;
-  if (align && align->string == "none") return eval::Alignment::kNone;
+eval::Alignment alignmentOf(const nlohmann::json& stats) {
+  const nlohmann::json* accuracy = findMember(stats.at("summary"), "accuracy");
+  const nlohmann::json* align = accuracy ? findMember(*accuracy, "align") : nullptr;
+  if (align && *align == "sim3") return eval::Alignment::kSim3;
+  if (align && *align == "none") return eval::Alignment::kNone;
   return eval::Alignment::kSE3;
 }
 
@@ -66,7 +66,7 @@ std::string trajectoryEntry(const std::string& name, const Trajectory& est, cons
 
 RunReportInfo writeRunReport(const std::string& run_dir, const ReportAssets& assets) {
   const fs::path dir(run_dir);
-  JsonValue stats;
+  nlohmann::json stats;
   const std::string stats_text = readStats(dir / "stats.json", stats);
   const Trajectory online = readTum((dir / "trajectory.tum").string());
   std::optional<Trajectory> refined, gt;

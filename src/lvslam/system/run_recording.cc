@@ -20,10 +20,11 @@ std::optional<eval::EvalResult> evaluateOutput(const Recording& recording, const
   return eval::evaluate(*recording.ground_truth, estimate, options);
 }
 
-RunResult runRecording(Recording& recording, const SystemConfig& config, const ProgressCallback& progress) {
+RunResult runRecording(Recording& recording, const SystemConfig& config, const ProgressCallback& progress,
+                       const FrameOutputCallback& on_frame) {
   RunResult run;
   const auto start = std::chrono::steady_clock::now();
-  run.records = runPipeline(*recording.source, config, progress);
+  run.records = runPipeline(*recording.source, config, progress, on_frame);
   run.output = assembleOutput(run.records, config, recording.source->calibration().T_camera_lidar);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.summary = summarize(run.records, run.output, config.mode, wall);

@@ -21,7 +21,8 @@ struct RunResult {
   std::optional<eval::EvalResult> accuracy_refined;  // of the offline refinement
 };
 
-RunResult runRecording(Recording& recording, const SystemConfig& config, const ProgressCallback& progress = {});
+RunResult runRecording(Recording& recording, const SystemConfig& config, const ProgressCallback& progress = {},
+                       const FrameOutputCallback& on_frame = {});
 
 // The accuracy of one of an output's trajectories (its online or its
 // refined one) against the recording's ground truth; none without ground

@@ -116,6 +116,12 @@ std::string summaryJson(const RunSummary& s, const RunAccuracy& accuracy, bool t
       .addCount("gated_visual_factors", s.gated_visual)
       .addNumber("visual_consistency_first", s.visual_consistency_first)
       .addNumber("visual_consistency_last", s.visual_consistency_last);
+  if (!s.stopped_why.empty())
+    o.addRaw("stopped", JsonObject()
+                            .addString("where", s.stopped_where)
+                            .addString("why", s.stopped_why)
+                            .addNumber("after_t", s.stopped_after_t)
+                            .str());
   if (accuracy.online) o.addRaw("accuracy", eval::formatJson(*accuracy.online));
   if (accuracy.refined) o.addRaw("accuracy_refined", eval::formatJson(*accuracy.refined));
   if (timings)
@@ -185,6 +191,11 @@ RunSummary summarize(const PipelineRecords& records, const SystemOutput& output,
   s.mode = mode;
   s.images = records.images;
   s.scans = records.scans_read;
+  if (records.input_fault) {
+    s.stopped_where = records.input_fault->where();
+    s.stopped_why = records.input_fault->why();
+    s.stopped_after_t = records.last_time;
+  }
   for (const ScanRecord& scan : records.scans) ++s.lidar_statuses[scan.status];
   s.poses = output.trajectory.size();
   std::set<int> maps;

@@ -43,6 +43,10 @@ struct RunSummary {
   // (about 1 when both subsystems' covariances are right; a steady rise
   // points at the extrinsic or the time offset). -1: none.
   double visual_consistency_first = -1.0, visual_consistency_last = -1.0;
+  // Where and why the recording could not be read further (empty when it was
+  // read whole), and the time of the last data read before it.
+  std::string stopped_where, stopped_why;
+  double stopped_after_t = 0.0;
 };
 
 RunSummary summarize(const PipelineRecords& records, const SystemOutput& output, RunMode mode, double wall_seconds);

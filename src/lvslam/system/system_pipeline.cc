@@ -267,10 +267,12 @@ void noteTime(PipelineRecords& records, std::size_t items_before, double t) {
 
 }  // namespace
 
-PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, const ProgressCallback& progress) {
+PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, const ProgressCallback& progress,
+                            const FrameOutputCallback& on_frame) {
   Workers workers = makeWorkers(source, config);
   OnlineStage stage(makeOnlineOutput(config, source.calibration().T_camera_lidar), workers.visual != nullptr,
                     workers.lidar != nullptr);
+  if (on_frame) stage.onFrameOutput(on_frame);
   if (workers.lidar)
     workers.lidar->onFramePosed([&stage](std::size_t index, const LidarFrameRecord& record) {
       stage.lidarReady(index, record);
@@ -347,8 +349,17 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
   const auto paceTo = [&](double t) {
     if (config.realtime) std::this_thread::sleep_until(due(t));
   };
+  // A source that cannot be read further ends the recording there.
+  const auto readNext = [&]() -> std::optional<SensorData> {
+    try {
+      return source.next();
+    } catch (const Error& fault) {
+      records.input_fault = fault;
+      return std::nullopt;
+    }
+  };
   try {
-    while (auto data = source.next()) {
+    while (auto data = readNext()) {
       if (failure.failed()) break;
       bool ok = true;
       if (auto* scan = std::get_if<LidarScan>(&*data)) {

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "lvslam/core/error.h"
 #include "lvslam/io/ply_writer.h"
 #include "lvslam/io/sensor_source.h"
 #include "lvslam/loop/loop_closure.h"
@@ -45,14 +46,23 @@ struct PipelineRecords {
   std::map<int, Eigen::Isometry3d> T_world_map;
   std::size_t images = 0, scans_read = 0;  // as read from the source
   double first_time = 0.0, last_time = 0.0;  // of the sensor data
+  // Why the source could not be read further (a truncated last scan or PNG,
+  // what a killed recorder leaves): the run stopped there and these records
+  // hold everything up to it. None when the whole recording was read.
+  std::optional<Error> input_fault;
 };
 
 // Called by the reading thread after each item handed on (time of the item,
 // images and scans so far).
 using ProgressCallback = std::function<void(double t, std::size_t images, std::size_t scans)>;
 
-// Throws lvslam::Error on bad input (from the source or either subsystem),
-// after both threads have stopped.
-PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, const ProgressCallback& progress);
+// Bad input the source reports (lvslam::Error from next()) ends the reading
+// there: the subsystems finish what was read and the records say where it
+// stopped (input_fault). Any other failure (either subsystem) throws, after
+// both threads have stopped.
+// `on_frame` gets each frame's online output as it is made (frame order).
+using FrameOutputCallback = std::function<void(const FrameOutput&)>;
+PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, const ProgressCallback& progress,
+                            const FrameOutputCallback& on_frame = {});
 
 }  // namespace lvslam::system

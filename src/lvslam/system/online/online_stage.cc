@@ -33,6 +33,7 @@ void OnlineStage::emit(const VisualFrameRecord* visual, const LidarFrameRecord* 
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - arrivals_[index]).count();
   frames_.push_back(std::move(frame));
   visual_.erase(index);
+  if (listener_) listener_(frames_.back());
 }
 
 void OnlineStage::runReady() {

@@ -11,6 +11,7 @@
 // exactly as when both run on one thread.
 #include <chrono>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -37,6 +38,9 @@ class OnlineStage {
   void finish(const std::vector<VisualFrameRecord>& visual, const std::vector<LidarFrameRecord>& lidar);
 
   std::vector<FrameOutput> takeFrames();
+  // Called with each frame's output as it is made, in frame order (from
+  // whichever thread completed the frame, under the stage's lock).
+  void onFrameOutput(std::function<void(const FrameOutput&)> listener) { listener_ = std::move(listener); }
   const OnlineOutput& output() const { return *output_; }
 
  private:
@@ -54,6 +58,7 @@ class OnlineStage {
   std::deque<LidarEvent> lidar_events_;             // in the LiDAR thread's order
   std::vector<std::chrono::steady_clock::time_point> arrivals_;
   std::vector<FrameOutput> frames_;
+  std::function<void(const FrameOutput&)> listener_;
 };
 
 }  // namespace lvslam::system
