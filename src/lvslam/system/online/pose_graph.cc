@@ -11,6 +11,7 @@
 #include <ceres/product_manifold.h>
 #include <ceres/solver.h>
 
+#include "lvslam/core/relative_pose_error.h"
 #include "lvslam/system/online/pose_information.h"
 
 namespace lvslam::system {
@@ -27,29 +28,19 @@ Matrix6d squareRoot(const Matrix6d& information) {
 // Parameter blocks [t_world_camera (3), q_world_camera (x, y, z, w)].
 struct RelativePoseResidual {
   RelativePoseResidual(const Eigen::Isometry3d& T_from_to, const Matrix6d& information)
-      : t_z(T_from_to.translation()), q_z_inverse(Eigen::Quaterniond(T_from_to.linear()).conjugate()),
-        sqrt_information(squareRoot(information)) {}
+      : t_z(T_from_to.translation()), q_z(T_from_to.linear()), sqrt_information(squareRoot(information)) {}
 
   template <typename T>
   bool operator()(const T* a, const T* b, T* residual) const {
     const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t_a(a), t_b(b);
     const Eigen::Map<const Eigen::Quaternion<T>> q_a(a + 3), q_b(b + 3);
-    const Eigen::Quaternion<T> q_a_inverse = q_a.conjugate();
-    const Eigen::Quaternion<T> q_ab = q_a_inverse * q_b;
-    const Eigen::Matrix<T, 3, 1> t_ab = q_a_inverse * (t_b - t_a);
-    const Eigen::Quaternion<T> q_z_inv = q_z_inverse.cast<T>();
-    Eigen::Quaternion<T> q_error = q_z_inv * q_ab;
-    if (q_error.w() < T(0)) q_error.coeffs() = -q_error.coeffs();
-    Eigen::Matrix<T, 6, 1> e;
-    e.template head<3>() = q_z_inv * (t_ab - t_z.cast<T>());
-    e.template tail<3>() = T(2.0) * q_error.vec();
     Eigen::Map<Eigen::Matrix<T, 6, 1>> r(residual);
-    r = sqrt_information.cast<T>() * e;
+    r = sqrt_information.cast<T>() * relativePoseError<T>(t_a, q_a, t_b, q_b, t_z, q_z);
     return true;
   }
 
   Eigen::Vector3d t_z;
-  Eigen::Quaterniond q_z_inverse;
+  Eigen::Quaterniond q_z;
   Matrix6d sqrt_information;
 };
 
