@@ -241,9 +241,9 @@ TEST(AssembleOutput, LinesOfEveryVisualMapAreMovedWithTheirMapsAnchor) {
   const Eigen::Isometry3d map1 = expSE3((Vector6d() << -5, 4, 2, 0.6, -0.3, 1.2).finished());
   PipelineRecords records = twoVisualMaps(Eigen::Isometry3d::Identity(), map1, true);
   const Eigen::Vector3d A_world(1.0, 2.0, 3.0), B_world(1.5, 2.0, 4.0);
-  records.visual_lines.push_back({A_world, B_world, false, 0});              // map 0's frame is the world
-  records.visual_lines.push_back({map1 * A_world, map1 * B_world, true, 1});  // the same line seen by map 1
-  records.visual_lines.push_back({A_world, B_world, false, 2});              // a map the output never used
+  records.visual_lines.push_back({A_world, B_world, false, 0, std::nullopt});              // map 0's frame is the world
+  records.visual_lines.push_back({map1 * A_world, map1 * B_world, true, 1, std::nullopt});  // the same line seen by map 1
+  records.visual_lines.push_back({A_world, B_world, false, 2, std::nullopt});              // a map the output never used
   const SystemOutput out = assembled(records, configFor(RunMode::kVisual), kTCameraLidar);
   ASSERT_EQ(out.lines_world.size(), 2u);
   EXPECT_LT((out.lines_world[0].a - A_world).norm(), 1e-9);
@@ -254,6 +254,42 @@ TEST(AssembleOutput, LinesOfEveryVisualMapAreMovedWithTheirMapsAnchor) {
   EXPECT_LT((out.lines_world[1].a - T_world_map1 * map1 * A_world).norm(), 1e-9);
   EXPECT_LT((out.lines_world[1].b - T_world_map1 * map1 * B_world).norm(), 1e-9);
   EXPECT_EQ(out.lines_world[1].g, 160);  // from fusion: orange
+}
+
+// After a loop closure lines.ply stays in map.ply's frame: a line moves as
+// the map points added at its time did (the keyframe correction before its
+// first keyframe's time; a fusion line, its frame's time).
+TEST(AssembleOutput, LoopClosureMovesEachLineWithTheMapOfItsTime) {
+  PipelineRecords records;
+  for (std::size_t j = 0; j < 3; ++j) records.lidar.push_back(lidarRecord(frameTime(j), exactOdomLidar(frameTime(j))));
+  const Eigen::Vector3d A(0.5, -0.2, 3.0), B(0.5, 0.8, 3.1);
+  records.lidar[2].fusion_lines.push_back({A, B});
+  loop::LoopClosureResult loop;
+  loop.keyframe_times = {frameTime(0), frameTime(1) + 0.01};
+  loop.T_odom_lidar = {exactOdomLidar(frameTime(0)), exactOdomLidar(frameTime(1))};
+  const Eigen::Isometry3d D = expSE3((Vector6d() << 0.3, -0.1, 0.2, 0.02, -0.05, 0.1).finished());
+  loop.T_odom_lidar_corrected = {loop.T_odom_lidar[0], D * loop.T_odom_lidar[1]};
+  loop.solved = true;
+  records.loop = loop;
+  // Lines of visual map 0 (placed at the world origin below): one first
+  // seen before the corrected keyframe, one after it, one never observed.
+  records.visual_lines.push_back({A, B, false, 0, frameTime(1)});
+  records.visual_lines.push_back({A, B, false, 0, frameTime(2)});
+  records.visual_lines.push_back({A, B, false, 0, std::nullopt});
+  SystemConfig config = configFor(RunMode::kLidar);
+  PipelineRecords placed = records;
+  placed.T_world_map[0] = Eigen::Isometry3d::Identity();
+  const std::unique_ptr<OnlineOutput> online = makeOnlineOutput(config, kTCameraLidar);
+  for (const LidarFrameRecord& l : placed.lidar) placed.online.push_back(online->add(nullptr, &l));
+  const SystemOutput out = assembleOutput(placed, config, kTCameraLidar);
+  ASSERT_EQ(out.lines_world.size(), 4u);
+  const Eigen::Isometry3d T = *out.frames[2].T_world_camera;
+  EXPECT_LT((out.lines_world[0].a - D * T * A).norm(), 1e-9);  // the fusion line of frame 2, after the keyframe
+  EXPECT_LT((out.lines_world[0].b - D * T * B).norm(), 1e-9);
+  EXPECT_LT((out.lines_world[1].a - A).norm(), 1e-9);  // first seen before it: the first keyframe's (none) correction
+  EXPECT_LT((out.lines_world[2].a - D * A).norm(), 1e-9);
+  EXPECT_LT((out.lines_world[2].b - D * B).norm(), 1e-9);
+  EXPECT_LT((out.lines_world[3].a - A).norm(), 1e-9);  // no time: left where the map put it
 }
 
 TEST(AssembleOutput, VisualModeIsNotMetricWhenAnyMapIsNot) {

@@ -1,5 +1,7 @@
 #include "lvslam/system/output_assembly.h"
 
+#include <optional>
+
 #include "lvslam/system/final_visual_poses.h"
 #include "lvslam/system/offline/loop_correction.h"
 #include "lvslam/system/offline/refinement.h"
@@ -18,17 +20,24 @@ PlySegment coloured(const Eigen::Vector3d& a, const Eigen::Vector3d& b, unsigned
   return s;
 }
 
-void addLines(const PipelineRecords& records, SystemOutput& out) {
+// Lines share map.ply's frame (the odometry's, which is fused mode's world),
+// so after a loop closure each moves as the map points added at its time
+// did (loop_correction.h).
+void addLines(const PipelineRecords& records, const std::optional<LoopCorrection>& loop, SystemOutput& out) {
+  const auto correctedAt = [&loop](std::optional<double> t) {
+    return loop && t ? loop->atTime(*t) : Eigen::Isometry3d::Identity();
+  };
   for (std::size_t j = 0; j < records.lidar.size() && j < out.frames.size(); ++j) {
     const auto& T = out.frames[j].T_world_camera;
     if (!T) continue;
+    const Eigen::Isometry3d T_placed = correctedAt(out.frames[j].t) * *T;
     for (const CameraLine& line : records.lidar[j].fusion_lines)
-      out.lines_world.push_back(coloured(*T * line.A, *T * line.B, 255, 0));
+      out.lines_world.push_back(coloured(T_placed * line.A, T_placed * line.B, 255, 0));
   }
   for (const MapLine& line : records.visual_lines) {
     const auto placed = out.T_world_map.find(line.map_id);  // a map never placed in the output: its lines neither
     if (placed == out.T_world_map.end()) continue;
-    const Eigen::Isometry3d& T_world_map = placed->second;
+    const Eigen::Isometry3d T_world_map = correctedAt(line.first_seen) * placed->second;
     out.lines_world.push_back(coloured(T_world_map * line.start, T_world_map * line.end, line.from_fusion ? 255 : 0,
                                        line.from_fusion ? 160 : 255));
   }
@@ -74,10 +83,10 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
     }
   }
   out.trajectory_refined = refineTrajectory(records, config, T_camera_lidar, out.trajectory);
-  out.lidar_map = records.loop && records.loop->solved
-                      ? correctMap(records.lidar_map, records.lidar_map_keyframe_starts, LoopCorrection(*records.loop))
-                      : records.lidar_map;
-  addLines(records, out);
+  std::optional<LoopCorrection> loop;
+  if (records.loop && records.loop->solved) loop.emplace(*records.loop);
+  out.lidar_map = loop ? correctMap(records.lidar_map, records.lidar_map_keyframe_starts, *loop) : records.lidar_map;
+  addLines(records, loop, out);
   addSubsystemTrajectories(records, config, T_lidar_camera, out);
   return out;
 }

@@ -25,6 +25,7 @@ struct MapLine {
   Eigen::Vector3d start = Eigen::Vector3d::Zero(), end = Eigen::Vector3d::Zero();
   bool from_fusion = false;
   int map_id = 0;
+  std::optional<double> first_seen;  // its first keyframe's time: loop closure moves it with the map of that time
 };
 
 struct PipelineRecords {

@@ -251,13 +251,18 @@ double medianSceneDepth(const VisualMap& map, int keyframe) {
   return upperMedian(std::move(depths)).value_or(0.0);
 }
 
+std::optional<double> firstSeen(const VisualMap& map, const std::vector<Observation>& observations) {
+  if (observations.empty()) return std::nullopt;
+  return map.keyframe(observations.front().keyframe).timestamp;
+}
+
 std::optional<double> medianFirstSeen(const VisualMap& map, const std::vector<int>& points) {
   std::vector<double> times;
   for (const int id : points) {
     if (id < 0) continue;
     const PointLandmark& p = map.point(id);
-    if (p.bad || p.observations.empty()) continue;
-    times.push_back(map.keyframe(p.observations.front().keyframe).timestamp);
+    if (p.bad) continue;
+    if (const std::optional<double> t = firstSeen(map, p.observations)) times.push_back(*t);
   }
   return upperMedian(std::move(times));
 }

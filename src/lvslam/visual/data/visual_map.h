@@ -112,6 +112,10 @@ class VisualMap {
 // Median depth of the keyframe's point landmarks; 0 when it has none.
 double medianSceneDepth(const VisualMap& map, int keyframe);
 
+// Time of the keyframe that first observed a landmark (the first of its
+// observations); none without any.
+std::optional<double> firstSeen(const VisualMap& map, const std::vector<Observation>& observations);
+
 // Median time of the keyframes that first observed the given point
 // landmarks (ids < 0 and bad ones skipped): when the part of the map a pose
 // rests on was mapped. None without any.
