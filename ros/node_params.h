@@ -23,7 +23,7 @@ struct NodeParams {
   std::string out_dir;             // written on shutdown as `lvslam run --out` does; "" for none
   std::string groundtruth_path;    // optional TUM ground truth: accuracy printed on shutdown
   std::size_t queue_size = 64;     // sensor items held before the oldest is dropped
-  double max_wait_s = 0.5;         // message time an item waits for a silent sensor
+  double max_wait_s = 1.0;         // message time an item waits for a silent sensor
   std::string world_frame = "map", camera_frame = "camera";
   // Optional robot base: TF and odometry then give world -> base_frame
   // through the static T_camera_base (row-major 4x4).
