@@ -1,5 +1,5 @@
 # Sourced by the lvslam_node tests: a private roscore on a free port and a
-# scratch folder, both gone when the test ends, whatever way it ends.
+# scratch folder whose bags are removed when the test ends, whatever way it ends.
 # Before sourcing: WORK (scratch folder). Gives: start_roscore, wait_for_line,
 # stop_process (stopped_code), fail.
 set -euo pipefail
@@ -12,6 +12,7 @@ cleanup() {
   for pid in "${children[@]}"; do kill -INT "$pid" 2>/dev/null || true; done
   sleep 1
   for pid in "${children[@]}"; do kill -KILL "$pid" 2>/dev/null || true; done
+  rm -f "$WORK"/*.bag  # the largest files by far; everything else stays to look at
 }
 trap cleanup EXIT
 
