@@ -11,6 +11,9 @@ namespace lvslam::ros_node {
 void PublishLatency::arrived(double stamp, Clock::time_point when) {
   std::lock_guard lock(mutex_);
   arrivals_[stamp] = when;
+  // Frames that never get a pose (before the first, or dropped) must not pile up.
+  constexpr std::size_t kMaxPending = 1000;
+  if (arrivals_.size() > kMaxPending) arrivals_.erase(arrivals_.begin());
 }
 
 void PublishLatency::published(double stamp, Clock::time_point when, double clock_now) {
