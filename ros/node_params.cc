@@ -66,6 +66,7 @@ NodeParams loadNodeParams(const ros::NodeHandle& nh) {
   if (!(p.max_wait_s > 0.0)) throw Error(where(nh, "max_wait"), "must be positive (seconds)");
   p.world_frame = get<std::string>(nh, "world_frame", p.world_frame);
   p.camera_frame = get<std::string>(nh, "camera_frame", p.camera_frame);
+  p.lidar_frame = get<std::string>(nh, "lidar_frame", p.lidar_frame);
   p.base_frame = get<std::string>(nh, "base_frame", "");
   if (!p.base_frame.empty()) p.T_camera_base = transformParam(nh, "T_camera_base");
   p.map_period_s = get<double>(nh, "map_period", p.map_period_s);

@@ -25,6 +25,7 @@ struct NodeParams {
   std::size_t queue_size = 64;     // sensor items held before the oldest is dropped
   double max_wait_s = 1.0;         // message time an item waits for a silent sensor
   std::string world_frame = "map", camera_frame = "camera";
+  std::string lidar_frame = "velodyne";  // static TF camera_frame -> lidar_frame (the preset's T_camera_lidar)
   // Optional robot base: TF and odometry then give world -> base_frame
   // through the static T_camera_base (row-major 4x4).
   std::string base_frame;

@@ -1,5 +1,6 @@
 #include "output_publisher.h"
 
+#include <cmath>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -31,6 +32,17 @@ void setTwist(Odometry& odom, const Eigen::Isometry3d& T_prev, const Eigen::Isom
   odom.twist.twist.angular.z = w.z();
 }
 
+// Whether the pose moved far enough from the path's last one to join it.
+bool pathStep(const Path& path, const Eigen::Isometry3d& T_world_child) {
+  if (path.poses.empty()) return true;
+  const auto& last = path.poses.back().pose;
+  const Eigen::Vector3d p(last.position.x, last.position.y, last.position.z);
+  const Eigen::Quaterniond q(last.orientation.w, last.orientation.x, last.orientation.y, last.orientation.z);
+  constexpr double kStepM = 0.1, kTurnRad = 5.0 * M_PI / 180.0;
+  return (T_world_child.translation() - p).norm() >= kStepM ||
+         q.angularDistance(Eigen::Quaterniond(T_world_child.rotation())) >= kTurnRad;
+}
+
 Point toPoint(const Eigen::Vector3d& p) {
   Point out;
   out.x = p.x();
@@ -46,11 +58,18 @@ OutputPublisher::OutputPublisher(ros::NodeHandle& nh, const NodeParams& params)
   ros::NodeHandle root;
   odometry_ = nh.advertise<Odometry>("odometry", 100);
   tf_ = root.advertise<TFMessage>("/tf", 100);
+  tf_static_ = root.advertise<TFMessage>("/tf_static", 1, true);
   path_ = nh.advertise<Path>("path", 1, true);
   map_ = nh.advertise<PointCloud2>("map", 1, true);
   lines_ = nh.advertise<MarkerArray>("lines", 1, true);
   diagnostics_ = root.advertise<DiagnosticArray>("/diagnostics", 10);
   path_msg_.header.frame_id = params.world_frame.c_str();
+  // The rig's fixed transforms, once: rviz then shows the raw sweeps too.
+  TFMessage fixed;
+  fixed.transforms.push_back(toTransform(params.preset.T_camera_lidar, 0.0, params.camera_frame, params.lidar_frame));
+  if (!params.base_frame.empty())
+    fixed.transforms.push_back(toTransform(params.T_camera_base.inverse(), 0.0, params.base_frame, params.camera_frame));
+  tf_static_.publish(fixed);
 }
 
 Eigen::Isometry3d OutputPublisher::outputPose(const Eigen::Isometry3d& T_world_camera) const {
@@ -83,10 +102,13 @@ void OutputPublisher::publishFrame(const system::FrameOutput& frame) {
     setTwist(odom, last_pose_->second, T_world_child, frame.t - last_pose_->first);
   last_pose_ = {frame.t, T_world_child};
 
-  PoseStamped stamped;
-  stamped.header = odom.header;
-  stamped.pose = odom.pose.pose;
-  path_msg_.poses.push_back(stamped);
+  if (pathStep(path_msg_, T_world_child)) {
+    PoseStamped stamped;
+    stamped.header = odom.header;
+    stamped.pose = odom.pose.pose;
+    path_msg_.poses.push_back(stamped);
+    path_changed_ = true;
+  }
 
   TFMessage tf;
   tf.transforms.push_back(toTransform(T_world_child, frame.t, params_.world_frame, child_frame_));
@@ -100,7 +122,8 @@ void OutputPublisher::publishFrame(const system::FrameOutput& frame) {
 
 void OutputPublisher::publishPath() {
   std::unique_lock lock(mutex_);
-  if (path_msg_.poses.empty()) return;
+  if (!path_changed_) return;
+  path_changed_ = false;
   path_msg_.header.stamp = path_msg_.poses.back().header.stamp;
   const Path path = path_msg_;
   lock.unlock();

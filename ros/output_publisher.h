@@ -3,7 +3,10 @@
 //   ~odometry   nav_msgs/Odometry of the online pose (T_world_camera, or
 //               T_world_base with ~base_frame), twist from the last two poses
 //   /tf         world_frame -> camera_frame (or base_frame)
-//   ~path       nav_msgs/Path of the online poses (every ~path_period)
+//   /tf_static  camera_frame -> lidar_frame (T_camera_lidar), and
+//               base_frame -> camera_frame when there is a base (latched)
+//   ~path       nav_msgs/Path of the online poses, one per 10 cm or 5 deg of
+//               motion (an hour's path stays small), every ~path_period
 //   ~map        the live LiDAR map, PointCloud2 (every ~map_period; latched)
 //   ~lines      fusion lines and visual line landmarks, MarkerArray (latched;
 //               on shutdown, when the system hands its line map over)
@@ -50,9 +53,10 @@ class OutputPublisher {
 
   const NodeParams& params_;
   std::string child_frame_;
-  ros::Publisher odometry_, tf_, path_, map_, lines_, diagnostics_;
+  ros::Publisher odometry_, tf_, tf_static_, path_, map_, lines_, diagnostics_;
   std::mutex mutex_;
   Path path_msg_;
+  bool path_changed_ = false;
   std::optional<std::pair<double, Eigen::Isometry3d>> last_pose_;
   DetectionState state_;
   std::map<std::string, std::size_t> last_counts_;
