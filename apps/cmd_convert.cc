@@ -2,7 +2,7 @@
 //   convert bag BAG... --lidar-topic T --camera-topic T [--preset m2dgr|FILE] [--groundtruth FILE] --out DIR
 //   convert bag --list BAG...
 //   convert kitti-raw --drive DIR --calib DIR [--camera 0|2] --out DIR
-//   convert to-bag --sequence DIR --out BAG [--lidar-topic T] [--camera-topic T]
+//   convert to-bag --sequence DIR --out BAG [--lidar-topic T] [--camera-topic T] [--image-format raw|png|jpeg]
 #include <iostream>
 #include <map>
 #include <memory>
@@ -67,7 +67,7 @@ int runBag(const BagArgs& args) {
 int runToBag(const SequenceToBagOptions& options) {
   const SequenceToBagStats s = writeSequenceBag(options);
   std::cout << fmt::format("{}: {} images on {}, {} scans ({} points) on {}; preset {}\n", options.bag_path, s.images,
-                           options.camera_topic, s.scans, s.points, options.lidar_topic, s.preset_path);
+                           cameraTopicOf(options), s.scans, s.points, options.lidar_topic, s.preset_path);
   return 0;
 }
 #else
@@ -132,7 +132,13 @@ void addToBagCommand(CLI::App& convert, CommandAction& action) {
   cmd->add_option("--sequence", options->sequence_dir, "Sequence folder")->required()->check(CLI::ExistingDirectory);
   cmd->add_option("--out", options->bag_path, "Bag file to write")->required();
   cmd->add_option("--lidar-topic", options->lidar_topic, "PointCloud2 topic")->default_val("/velodyne_points");
-  cmd->add_option("--camera-topic", options->camera_topic, "Image topic")->default_val("/camera/image_raw");
+  cmd->add_option("--camera-topic", options->camera_topic,
+                  "Image topic (default /camera/image_raw, or /camera/image_raw/compressed when compressed)");
+  const std::map<std::string, BagImageFormat> formats{
+      {"raw", BagImageFormat::kRaw}, {"png", BagImageFormat::kPng}, {"jpeg", BagImageFormat::kJpeg}};
+  cmd->add_option("--image-format", options->image_format,
+                  "raw (sensor_msgs/Image), png (CompressedImage, lossless) or jpeg (CompressedImage, quality 95)")
+      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case))->default_str("raw");
   cmd->add_option("--lidar-frame", options->lidar_frame, "frame_id of the scans")->default_val("velodyne");
   cmd->add_option("--camera-frame", options->camera_frame, "frame_id of the images")->default_val("camera");
   cmd->callback([&action, options] { action = [options] { return runToBag(*options); }; });

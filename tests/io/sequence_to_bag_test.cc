@@ -50,11 +50,12 @@ std::string writeSequence(const TempDir& dir) {
   return dir.file("seq");
 }
 
-TEST(SequenceToBag, ReadsBackThroughItsPresetAsTheSequence) {
+void expectRoundTrip(BagImageFormat format) {
   TempDir dir;
   SequenceToBagOptions options;
   options.sequence_dir = writeSequence(dir);
   options.bag_path = dir.file("seq.bag");
+  options.image_format = format;
   const SequenceToBagStats stats = writeSequenceBag(options);
   EXPECT_EQ(stats.images, 3u);
   EXPECT_EQ(stats.scans, 3u);
@@ -62,7 +63,7 @@ TEST(SequenceToBag, ReadsBackThroughItsPresetAsTheSequence) {
 
   const SensorPreset preset = loadSensorPreset(stats.preset_path);
   EXPECT_EQ(preset.lidar_topic, options.lidar_topic);
-  EXPECT_EQ(preset.camera_topic, options.camera_topic);
+  EXPECT_EQ(preset.camera_topic, cameraTopicOf(options));
   ASSERT_TRUE(preset.camera.has_value());
   EXPECT_EQ(preset.camera->camera.width(), 8);
   EXPECT_TRUE(preset.T_camera_lidar.isApprox(SequenceInfo{}.T_camera_lidar * Eigen::Translation3d(0.1, -0.2, 0.3)));
@@ -97,6 +98,15 @@ TEST(SequenceToBag, ReadsBackThroughItsPresetAsTheSequence) {
   }
   EXPECT_EQ(items, 6u);
   EXPECT_FALSE(bag.source->next().has_value());
+}
+
+TEST(SequenceToBag, ReadsBackThroughItsPresetAsTheSequence) { expectRoundTrip(BagImageFormat::kRaw); }
+
+TEST(SequenceToBag, PngCompressedImagesReadBackExactly) {
+  SequenceToBagOptions options;
+  options.image_format = BagImageFormat::kPng;
+  EXPECT_EQ(cameraTopicOf(options), "/camera/image_raw/compressed");  // image_transport's name: the node reads it as such
+  expectRoundTrip(BagImageFormat::kPng);
 }
 
 TEST(SequenceToBag, RecordsEachSweepWhenItEnds) {

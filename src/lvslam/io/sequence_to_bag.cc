@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include <opencv2/imgcodecs.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include "lvslam/core/error.h"
@@ -76,6 +77,22 @@ rosmsg::Image toImage(const ImageFrame& frame, const std::string& camera_frame) 
   return msg;
 }
 
+// As image_transport's compressed plugin writes it: "<encoding>; <codec> compressed <encoding>".
+rosmsg::CompressedImage toCompressed(const ImageFrame& frame, const std::string& camera_frame, BagImageFormat format) {
+  const bool png = format == BagImageFormat::kPng;
+  std::vector<std::uint8_t> bytes;
+  const std::vector<int> params = png ? std::vector<int>{} : std::vector<int>{cv::IMWRITE_JPEG_QUALITY, 95};
+  if (!cv::imencode(png ? ".png" : ".jpg", frame.image, bytes, params))
+    throw Error(camera_frame, "cannot compress the image at " + std::to_string(frame.timestamp));
+  rosmsg::CompressedImage msg;
+  msg.header.stamp = rosTime(frame.timestamp);
+  msg.header.frame_id = camera_frame.c_str();
+  const std::string encoding = frame.image.channels() == 1 ? "mono8" : "bgr8";
+  msg.format = (encoding + "; " + (png ? "png" : "jpeg") + " compressed " + encoding).c_str();
+  msg.data.assign(bytes.begin(), bytes.end());
+  return msg;
+}
+
 // A live driver publishes a sweep once its last point is measured.
 double publishTime(const LidarScan& scan) {
   float last = 0.0f;
@@ -91,7 +108,7 @@ void writePreset(const SequenceToBagOptions& options, const std::string& path) {
   preset["format"] = kSensorPresetFormat;
   preset["name"] = sequence["name"] ? sequence["name"].as<std::string>() : fs::path(options.sequence_dir).filename().string();
   preset["topics"]["lidar"] = options.lidar_topic;
-  preset["topics"]["camera"] = options.camera_topic;
+  preset["topics"]["camera"] = cameraTopicOf(options);
   for (const char* key : {"camera", "extrinsics", "groundtruth"})
     if (sequence[key]) preset[key] = sequence[key];
   if (const YAML::Node lidar = sequence["lidar"]) {
@@ -106,6 +123,11 @@ void writePreset(const SequenceToBagOptions& options, const std::string& path) {
 
 }  // namespace
 
+std::string cameraTopicOf(const SequenceToBagOptions& options) {
+  if (!options.camera_topic.empty()) return options.camera_topic;
+  return options.image_format == BagImageFormat::kRaw ? "/camera/image_raw" : "/camera/image_raw/compressed";
+}
+
 std::string presetPathForBag(const std::string& bag_path) {
   fs::path p(bag_path);
   if (p.extension() == ".bag") p.replace_extension();
@@ -117,6 +139,7 @@ SequenceToBagStats writeSequenceBag(const SequenceToBagOptions& options) {
   request.sequence_dir = options.sequence_dir;
   Recording recording = openRecording(request);
   SequenceToBagStats stats;
+  const std::string camera_topic = cameraTopicOf(options);
   const std::string partial = options.bag_path + ".partial";  // a failed conversion leaves no bag
   try {
     rosbag::Bag bag(partial, rosbag::bagmode::Write);
@@ -127,7 +150,10 @@ SequenceToBagStats writeSequenceBag(const SequenceToBagOptions& options) {
         stats.points += scan->size();
       } else {
         const auto& frame = std::get<ImageFrame>(*data);
-        bag.write(options.camera_topic, rosTime(frame.timestamp), toImage(frame, options.camera_frame));
+        if (options.image_format == BagImageFormat::kRaw)
+          bag.write(camera_topic, rosTime(frame.timestamp), toImage(frame, options.camera_frame));
+        else
+          bag.write(camera_topic, rosTime(frame.timestamp), toCompressed(frame, options.camera_frame, options.image_format));
         ++stats.images;
       }
     }
