@@ -14,7 +14,9 @@ source "$(dirname "$0")/ros_test_env.sh"
 cd "$WORK"
 
 "$LVSLAM" simulate --scenario room --duration 6 --out seq > /dev/null
-"$LVSLAM" convert to-bag --sequence seq --out seq.bag
+# PNG-compressed images (lossless): the node takes the CompressedImage path
+# a robot's camera usually is; the bad-input test feeds raw Images.
+"$LVSLAM" convert to-bag --sequence seq --out seq.bag --image-format png
 "$LVSLAM" run --sequence seq --deterministic --out run > run.log
 start_roscore
 
@@ -27,6 +29,7 @@ rosparam set /use_sim_time true
 node=$!
 children+=($node)
 wait_for_line node.log "lvslam_node: mode fused" 20
+grep -q "(CompressedImage)" node.log || fail "the node does not read the compressed topic as CompressedImage"
 # --delay: the node's and recorder's subscriptions connect before the first message.
 rosbag play --clock --delay 2 --quiet seq.bag > play.log 2>&1 || fail "rosbag play failed: $(cat play.log)"
 
