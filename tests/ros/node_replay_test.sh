@@ -7,8 +7,12 @@
 # the simulator's ground truth (as accurate as `lvslam run` on the same
 # sequence) and, both --deterministic, agrees with `lvslam run`'s online
 # trajectory.tum within 1 mm (ATE without alignment).
-#   node_replay_test.sh LVSLAM LVSLAM_NODE ODOMETRY_RECORDER WORK
-LVSLAM=$1 NODE=$2 RECORDER=$3 WORK=$4
+# Its other outputs reach a subscriber too: the path (thinned), the map and
+# the line markers it publishes on shutdown (the run folder's map.ply and
+# lines.ply), the diagnostics with the detection module's switches (as many
+# as the run's summary counts), the static camera -> LiDAR transform.
+#   node_replay_test.sh LVSLAM LVSLAM_NODE ODOMETRY_RECORDER OUTPUT_PROBE WORK
+LVSLAM=$1 NODE=$2 RECORDER=$3 PROBE=$4 WORK=$5
 rm -rf "$WORK"
 source "$(dirname "$0")/ros_test_env.sh"
 cd "$WORK"
@@ -23,6 +27,9 @@ start_roscore
 "$RECORDER" /lvslam/odometry odometry.tum > recorder.log 2>&1 &
 recorder=$!
 children+=($recorder)
+"$PROBE" /lvslam probe.txt > probe.log 2>&1 &
+probe=$!
+children+=($probe)
 rosparam set /use_sim_time true
 "$NODE" __name:=lvslam _preset:="$WORK/seq.preset.yaml" _out:="$WORK/node" _deterministic:=true \
   _queue_size:=1000 > node.log 2>&1 &
@@ -38,6 +45,8 @@ stop_process "$node" 120
 node_code=$stopped_code
 sleep 0.5  # the last odometry messages reach the recorder
 stop_process "$recorder" 10
+stop_process "$probe" 10
+cat probe.txt
 cat node.log
 [ "$node_code" = 0 ] || fail "lvslam_node exited with $node_code"
 
@@ -51,6 +60,17 @@ echo "poses: lvslam run $run_poses, node trajectory.tum $node_poses, odometry re
 [ "$node_poses" = "$run_poses" ] || fail "the node made $node_poses poses, lvslam run $run_poses"
 [ "$recorded" = "$run_poses" ] || fail "the recorder got $recorded odometry messages of $run_poses poses"
 grep -q "dropped: none" node.log || fail "the node dropped input at 1x: $(grep dropped node.log)"
+
+probe() { sed -n "s/^$1 //p" probe.txt; }
+ply_count() { sed -n -e '/^end_header/q' -e "s/^element $2 \([0-9]*\)/\1/p" "$1"; }
+path_poses=$(probe path)
+[ "$path_poses" -gt 1 ] && [ "$path_poses" -le "$node_poses" ] || fail "path of $path_poses poses for $node_poses frames"
+[ "$(probe map)" = "$(ply_count node/map.ply vertex)" ] || fail "map of $(probe map) points, map.ply $(ply_count node/map.ply vertex)"
+[ "$(probe lines)" = "$(ply_count node/lines.ply edge)" ] || fail "$(probe lines) line markers, lines.ply $(ply_count node/lines.ply edge)"
+switches=$(sed -n 's/.*fusion:.* \([0-9]*\) switch(es).*/\1/p' node.log)
+read -r diagnostics diag_switches <<< "$(probe diagnostics)"
+[ "$diagnostics" -gt 0 ] && [ "$diag_switches" = "$switches" ] || fail "diagnostics: $(probe diagnostics), the run made $switches switches"
+[[ "$(probe tf_static)" == *"camera>velodyne"* ]] || fail "no static camera -> velodyne transform: $(probe tf_static)"
 
 ate() { sed -n 's/.*"ate": {"rmse": \([^,]*\),.*/\1/p'; }
 node_gt=$("$LVSLAM" eval --sequence seq --est odometry.tum --json | ate)
