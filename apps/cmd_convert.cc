@@ -2,6 +2,7 @@
 //   convert bag BAG... --lidar-topic T --camera-topic T [--preset m2dgr|FILE] [--groundtruth FILE] --out DIR
 //   convert bag --list BAG...
 //   convert kitti-raw --drive DIR --calib DIR [--camera 0|2] --out DIR
+//   convert to-bag --sequence DIR --out BAG [--lidar-topic T] [--camera-topic T] [--image-format raw|png|jpeg]
 #include <iostream>
 #include <map>
 #include <memory>
@@ -18,6 +19,7 @@
 #include "lvslam/io/rosbag_convert.h"
 #include "lvslam/io/rosbag_reader.h"
 #endif
+#include "lvslam/io/sequence_to_bag.h"  // declarations only; defined with the ROS bag component
 
 namespace lvslam::apps {
 
@@ -61,11 +63,20 @@ int runBag(const BagArgs& args) {
                            args.out, s.images, s.scans, s.points, s.groundtruth, s.skipped);
   return 0;
 }
-#else
-int runBag(const BagArgs&) {
-  throw Error("lvslam convert bag", "this lvslam was built without ROS bag support (-DLVSLAM_WITH_ROSBAG=OFF); "
-                                    "run scripts/install-deps.sh and rebuild with it ON");
+
+int runToBag(const SequenceToBagOptions& options) {
+  const SequenceToBagStats s = writeSequenceBag(options);
+  std::cout << fmt::format("{}: {} images on {}, {} scans ({} points) on {}; preset {}\n", options.bag_path, s.images,
+                           cameraTopicOf(options), s.scans, s.points, options.lidar_topic, s.preset_path);
+  return 0;
 }
+#else
+[[noreturn]] void withoutRosbag(const std::string& command) {
+  throw Error(command, "this lvslam was built without ROS bag support (-DLVSLAM_WITH_ROSBAG=OFF); "
+                       "run scripts/install-deps.sh and rebuild with it ON");
+}
+int runBag(const BagArgs&) { withoutRosbag("lvslam convert bag"); }
+int runToBag(const SequenceToBagOptions&) { withoutRosbag("lvslam convert to-bag"); }
 #endif
 
 void addBagCommand(CLI::App& convert, CommandAction& action) {
@@ -112,13 +123,35 @@ void addKittiRawCommand(CLI::App& convert, CommandAction& action) {
   });
 }
 
+void addToBagCommand(CLI::App& convert, CommandAction& action) {
+  CLI::App* cmd = convert.add_subcommand(
+      "to-bag", "A sequence folder to a ROS1 bag (PointCloud2 with per-point time, Image), each message recorded "
+                "when a live driver would publish it, and beside it BAG_STEM.preset.yaml (the sequence's camera, "
+                "extrinsics and the bag's topics): replay any sequence into lvslam_node with rosbag play");
+  auto options = std::make_shared<SequenceToBagOptions>();
+  cmd->add_option("--sequence", options->sequence_dir, "Sequence folder")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("--out", options->bag_path, "Bag file to write")->required();
+  cmd->add_option("--lidar-topic", options->lidar_topic, "PointCloud2 topic")->default_val("/velodyne_points");
+  cmd->add_option("--camera-topic", options->camera_topic,
+                  "Image topic (default /camera/image_raw, or /camera/image_raw/compressed when compressed)");
+  const std::map<std::string, BagImageFormat> formats{
+      {"raw", BagImageFormat::kRaw}, {"png", BagImageFormat::kPng}, {"jpeg", BagImageFormat::kJpeg}};
+  cmd->add_option("--image-format", options->image_format,
+                  "raw (sensor_msgs/Image), png (CompressedImage, lossless) or jpeg (CompressedImage, quality 95)")
+      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case))->default_str("raw");
+  cmd->add_option("--lidar-frame", options->lidar_frame, "frame_id of the scans")->default_val("velodyne");
+  cmd->add_option("--camera-frame", options->camera_frame, "frame_id of the images")->default_val("camera");
+  cmd->callback([&action, options] { action = [options] { return runToBag(*options); }; });
+}
+
 }  // namespace
 
 void addConvertCommand(CLI::App& app, CommandAction& action) {
-  CLI::App* convert = app.add_subcommand("convert", "Convert recordings (ROS1 bags, KITTI raw) to sequence folders");
+  CLI::App* convert = app.add_subcommand("convert", "Convert recordings (ROS1 bags, KITTI raw) to sequence folders, and sequence folders to ROS1 bags");
   convert->require_subcommand(1);
   addBagCommand(*convert, action);
   addKittiRawCommand(*convert, action);
+  addToBagCommand(*convert, action);
 }
 
 }  // namespace lvslam::apps

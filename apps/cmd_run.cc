@@ -5,7 +5,6 @@
 // that cannot be read to its end is run up to the fault, its outputs
 // written, and the fault then ends the command (exit 2).
 #include <chrono>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -17,14 +16,11 @@
 
 #include "command.h"
 #include "progress_line.h"
-#include "report_html.h"
+#include "run_folder.h"
 #include "lvslam/core/yaml_config.h"
-#include "lvslam/eval/eval_report.h"
 #include "lvslam/io/recording.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/sim/simulate_sequence.h"
-#include "lvslam/system/ground_truth_export.h"
-#include "lvslam/system/offline/loop_report.h"
 #include "lvslam/system/run_recording.h"
 #include "lvslam/system/output_folder.h"
 
@@ -112,36 +108,7 @@ int runRun(RunArgs args) {
   });
   online_poses.reset();
   progress.finish();
-  // Input that ends in a fault (a cut last scan or image) still gives what was
-  // read before it: the outputs are written, then the fault is the one error line.
-  if (run.output.trajectory.empty()) std::filesystem::remove(args.out_dir + "/trajectory.tum");  // the stream's, empty
-  if (run.output.trajectory.empty() && run.records.input_fault) throw *run.records.input_fault;
-  if (run.output.trajectory.empty())
-    throw std::runtime_error(fmt::format("no result: mode {} gave no pose from {} images and {} scans", args.mode,
-                                         run.summary.images, run.summary.scans));
-  system::writeRunOutputs(args.out_dir, run.records, run.output, run.summary, {run.accuracy, run.accuracy_refined},
-                          !args.deterministic);
-  std::cout << system::formatRunSummary(run.summary, run.output);
-  if (run.records.loop) std::cout << system::formatLoopSummary(*run.records.loop);
-  std::cout << fmt::format("wrote {}/{{trajectory.tum (online {}, {} poses), trajectory_refined.tum (offline, {} poses), "
-                           "stats.json, map.ply ({} points), lines.ply ({} lines)}}\n",
-                           args.out_dir, run.output.trajectory_is_camera ? "T_world_camera" : "T_world_lidar",
-                           run.output.trajectory.size(), run.output.trajectory_refined.size(),
-                           run.output.lidar_map.size(), run.output.lines_world.size());
-  if (run.accuracy) std::cout << "online (trajectory.tum):\n" << eval::formatSummary(*run.accuracy);
-  if (run.accuracy_refined)
-    std::cout << "offline refinement (trajectory_refined.tum):\n" << eval::formatSummary(*run.accuracy_refined);
-  // No stale file from an earlier run into the same folder may reach the report.
-  if (const std::optional<Trajectory> gt = system::groundTruthInOutputFrame(recording, run.output))
-    writeTum(args.out_dir + "/groundtruth.tum", *gt);
-  else
-    std::filesystem::remove(args.out_dir + "/groundtruth.tum");
-  writeRunReportOrWarn(args.out_dir);
-  if (run.records.input_fault) {
-    std::cout << fmt::format("the recording could not be read after t = {:.6f}: the outputs hold what came before\n",
-                             run.summary.stopped_after_t);
-    throw *run.records.input_fault;
-  }
+  finishRunFolder(args.out_dir, recording, run, args.mode, args.deterministic);
   return 0;
 }
 

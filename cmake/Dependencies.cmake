@@ -21,3 +21,4 @@ if(LVSLAM_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
 include(Rosbag)  # optional ROS1 bag component (LVSLAM_WITH_ROSBAG)
+include(Ros)  # optional ROS1 node (LVSLAM_WITH_ROS), after the bag component it builds on

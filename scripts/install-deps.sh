@@ -16,6 +16,11 @@ packages=(
   librosbag-storage-dev librcpputils-dev librcutils-dev libament-index-cpp-dev
   libsensor-msgs-dev pluginlib-dev libclass-loader-dev
   libroscpp-core-dev libroslz4-dev libbz2-dev libconsole-bridge-dev
+  # lvslam_node (optional component LVSLAM_WITH_ROS, on when these are found):
+  # roscpp and the message headers it publishes; roscore, rosparam and
+  # rosbag play for its tests (tests/ros) and for replaying bags into it
+  libroscpp-dev libnav-msgs-dev libvisualization-msgs-dev libdiagnostic-msgs-dev libtf2-msgs-dev
+  python3-roslaunch python3-rosparam python3-rosbag
   # HTML reports: the test opens them in headless Chromium
   chromium
 )

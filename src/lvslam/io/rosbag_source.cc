@@ -62,10 +62,6 @@ std::vector<std::string> orderFiles(const std::vector<std::string>& files, const
   return ordered;
 }
 
-double stampOf(const SensorData& d) {
-  return std::visit([](const auto& x) { return x.timestamp; }, d);
-}
-
 }  // namespace
 
 // The messages of one topic across the files, decoded, one ahead.

@@ -12,6 +12,11 @@ namespace lvslam {
 
 using SensorData = std::variant<ImageFrame, LidarScan>;
 
+// The stamp of an image or a scan.
+inline double stampOf(const SensorData& data) {
+  return std::visit([](const auto& item) { return item.timestamp; }, data);
+}
+
 class SensorSource {
  public:
   virtual ~SensorSource() = default;
