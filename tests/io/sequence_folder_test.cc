@@ -99,7 +99,7 @@ TEST(SequenceFolder, WriteReadRoundTripMergesSensorsInTimeOrder) {
 // written (quotes, backslashes, a YAML comment sign, unicode, a newline) and
 // every double exactly (the extrinsic to rounding: the reader re-orthonormalises it).
 TEST(SequenceFolder, SequenceYamlReadsBackExactlyWhateverTheName) {
-  for (const std::string name : {std::string("quote\"name"), std::string("seq\\1"), std::string("a: b # c"),
+  for (const std::string& name : {std::string("quote\"name"), std::string("seq\\1"), std::string("a: b # c"),
                                  std::string("caf\u00e9 \u2192 \u00fcber"), std::string("two\nlines"),
                                  std::string("")}) {
     TempDir dir;

@@ -98,8 +98,10 @@ TEST(FusedEstimator, AJumpInTheLidarIsGatedAndLogged) {
   EXPECT_TRUE(glitch.visual_used);
   EXPECT_LT((glitch.T_world_camera->translation() - Eigen::Vector3d(1.0, 0, 0)).norm(), 0.005);
   // Only the jump: the steps before it and the return after it pass.
-  for (int j = 0; j < 30; ++j)
-    if (j != 20) EXPECT_TRUE(run.outputs[static_cast<std::size_t>(j)].gated.empty()) << j;
+  for (int j = 0; j < 30; ++j) {
+    if (j == 20) continue;
+    EXPECT_TRUE(run.outputs[static_cast<std::size_t>(j)].gated.empty()) << j;
+  }
 }
 
 TEST(FusedEstimator, AJumpInVisionIsGatedAndLogged) {

@@ -1,5 +1,7 @@
 #include "lvslam/system/online/online_output.h"
 
+#include <utility>
+
 #include "lvslam/system/final_visual_poses.h"
 #include "lvslam/system/online/pose_information.h"
 #include "lvslam/system/output_trajectory.h"
@@ -7,6 +9,15 @@
 namespace lvslam::system {
 
 namespace {
+
+// A frame's output before any pose is known.
+FrameOutput frameAt(double t, OutputSource source, std::string problem) {
+  FrameOutput frame;
+  frame.t = t;
+  frame.source = source;
+  frame.problem = std::move(problem);
+  return frame;
+}
 
 VisualState stateOf(visual::TrackingState state) {
   switch (state) {
@@ -21,7 +32,7 @@ class LidarOnline final : public OnlineOutput {
  public:
   explicit LidarOnline(const Eigen::Isometry3d& T_lidar_camera) : T_lidar_camera_(T_lidar_camera) {}
   FrameOutput add(const VisualFrameRecord*, const LidarFrameRecord* l) override {
-    FrameOutput frame{l->t, std::nullopt, OutputSource::kLidar, "mode lidar"};
+    FrameOutput frame = frameAt(l->t, OutputSource::kLidar, "mode lidar");
     if (l->T_odom_lidar) frame.T_world_camera = *l->T_odom_lidar * T_lidar_camera_;
     return frame;
   }
@@ -36,7 +47,7 @@ class VisualOnline final : public OnlineOutput {
  public:
   explicit VisualOnline(bool final_poses) : output_(Eigen::Isometry3d::Identity()), final_poses_(final_poses) {}
   FrameOutput add(const VisualFrameRecord* v, const LidarFrameRecord*) override {
-    FrameOutput frame{v->t, std::nullopt, OutputSource::kVisual, ""};
+    FrameOutput frame = frameAt(v->t, OutputSource::kVisual, "");
     const auto& r = v->result;
     if (!r.pose_valid) {
       frame.problem = "visual tracking " + std::string(visual::trackingStateName(r.state));
@@ -67,7 +78,7 @@ class PaperOnline final : public OnlineOutput {
         detection_(config.detection), final_poses_(final_poses) {}
   FrameOutput add(const VisualFrameRecord* v, const LidarFrameRecord* l) override {
     const OutputSource source = detection_.update(healthOf(*v));
-    FrameOutput frame{v->t, std::nullopt, source, detection_.lastProblem()};
+    FrameOutput frame = frameAt(v->t, source, detection_.lastProblem());
     // Without any LiDAR pose yet nothing anchors the output world.
     if (l->T_odom_lidar || !output_.trajectory().empty()) {
       FrameEstimates estimates{v->t, std::nullopt, v->result.map_id, l->T_odom_lidar};
@@ -95,7 +106,7 @@ class FusedOnline final : public OnlineOutput {
 
   FrameOutput add(const VisualFrameRecord* v, const LidarFrameRecord* l) override {
     const OutputSource admitted = detection_.update(healthOf(*v));
-    FrameOutput frame{v->t, std::nullopt, OutputSource::kLidar, detection_.lastProblem()};
+    FrameOutput frame = frameAt(v->t, OutputSource::kLidar, detection_.lastProblem());
     std::optional<VisualFrameInput> visual;
     if (admitted == OutputSource::kVisual) visual = final_poses_ ? finalVisualInput(*v) : visualInput(v->result);
     const FusedFrameOutput out = estimator_.add(v->t, lidarInput(*l), visual);
