@@ -41,16 +41,22 @@ struct WorkerRun {
   std::vector<double> frame_times;
   std::vector<Call> calls;
   Trajectory scans;  // scanTrajectory() at the end
+  Trajectory camera_poses;  // lidar_camera_poses of every answer, in order
 };
 
 // Scans at 0.1 s steps except those in `missing`, two camera frames per
 // sweep (3 and 7 hundredths in), handed on in time order as the pipeline
 // does: the end of the sweep before each scan, the scan, its frames.
-WorkerRun runWorker(int sweeps, const std::vector<int>& missing, const std::vector<double>& extra_frames = {}) {
+SystemConfig lidarMode() {
   SystemConfig config;
   config.mode = RunMode::kLidar;
   config.loop.enabled = false;
-  LidarWorker worker(config, Calibration{});
+  return config;
+}
+
+WorkerRun runWorker(int sweeps, const std::vector<int>& missing, const std::vector<double>& extra_frames = {},
+                    const SystemConfig& config = lidarMode(), const Calibration& calibration = {}) {
+  LidarWorker worker(config, calibration);
   WorkerRun run;
   worker.onFramePosed([&](std::size_t index, const LidarFrameRecord& record) {
     run.calls.push_back({index, record, worker.scans().back().t});
@@ -60,7 +66,8 @@ WorkerRun runWorker(int sweeps, const std::vector<int>& missing, const std::vect
   const testing::SyntheticScene room = testing::structuredRoom();
   const auto addFrame = [&](double t) {
     run.frame_times.push_back(t);
-    worker.addFrame(t, {});
+    const FusionAnswer answer = worker.addFrame(t, {});
+    run.camera_poses.insert(run.camera_poses.end(), answer.lidar_camera_poses.begin(), answer.lidar_camera_poses.end());
   };
   for (int k = 0; k < sweeps; ++k) {
     const double t0 = 0.1 * k;
@@ -174,6 +181,35 @@ TEST(LidarWorker, FramesNoSweepCoversAreInterpolatedAcrossTheGapAndMarkedUnrelia
   ASSERT_EQ(sweep3.size(), 2u);
   EXPECT_NEAR(sweep3[0].registered, 0.3, 1e-9);
   EXPECT_NEAR(sweep3[1].registered, 0.6, 1e-9);
+}
+
+TEST(LidarWorker, FusedModeHandsTheInterpolatedPosesOfReliableFramesToTheVisualSideInTheCameraFrame) {
+  SystemConfig config;  // fused, LiDAR pose priors on
+  config.loop.enabled = false;
+  ASSERT_TRUE(config.visual.visual.use_lidar_pose_priors);
+  Calibration calibration;
+  calibration.camera = PinholeCamera(640, 480, 450.0, 450.0, 320.0, 240.0);
+  Eigen::Matrix3d R_camera_lidar;
+  R_camera_lidar << 0, -1, 0, 0, 0, -1, 1, 0, 0;  // camera z along the LiDAR's x
+  calibration.T_camera_lidar = makePose(R_camera_lidar, Eigen::Vector3d(0.05, -0.1, 0.02));
+  // Scan 4 is missing: frames between 0.4 and 0.5 s are unreliable and not handed on.
+  const WorkerRun run = runWorker(8, {4}, {}, config, calibration);
+  std::vector<Call> interpolated;  // second calls, the reliable ones, in the order made
+  std::vector<std::size_t> seen(run.frame_times.size(), 0);
+  for (const Call& c : run.calls)
+    if (++seen[c.index] == 2 && c.record.pose_reliable) interpolated.push_back(c);
+  // Each goes with the answer to the next frame; the two made at finish()
+  // (sweep 6's frames, when the last sweep is registered) have none.
+  ASSERT_GE(interpolated.size(), 6u);
+  ASSERT_EQ(run.camera_poses.size(), interpolated.size() - 2);
+  for (std::size_t j = 0; j < run.camera_poses.size(); ++j) {
+    const Call& c = interpolated[j];
+    const double t = run.frame_times[c.index];
+    EXPECT_DOUBLE_EQ(run.camera_poses[j].t, t);
+    EXPECT_FALSE(t > 0.4 && t < 0.5) << "frame at " << t;
+    const Eigen::Isometry3d expected = *c.record.T_odom_lidar * calibration.T_camera_lidar.inverse();
+    EXPECT_LT((run.camera_poses[j].T_world_frame.matrix() - expected.matrix()).norm(), 1e-12) << "frame at " << t;
+  }
 }
 
 }  // namespace
