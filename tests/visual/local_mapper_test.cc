@@ -4,8 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-
 #include "visual/synthetic_keyframes.h"
 
 namespace lvslam::visual {
@@ -30,10 +28,7 @@ class LocalMapperTest : public ::testing::Test {
     return id;
   }
   bool sees(int c, int point) const { return keypointOf(c, point) >= 0; }
-  int keypointOf(int c, int point) const {
-    const auto it = std::find(point_of_[c].begin(), point_of_[c].end(), point);
-    return it == point_of_[c].end() ? -1 : static_cast<int>(it - point_of_[c].begin());
-  }
+  int keypointOf(int c, int point) const { return testing::keypointOf(point_of_[c], point); }
   int landmark(int point) {
     const int id = map_.addPointLandmark(scene_.points[point], descriptors_.row(point));
     for (int c = 0; c < static_cast<int>(map_.keyframes().size()); ++c)

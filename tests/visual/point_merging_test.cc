@@ -28,9 +28,8 @@ class PointMergingTest : public ::testing::Test {
   int landmark(int i, const std::vector<int>& cameras, const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
     const int id = map_.addPointLandmark(scene_.points[i] + offset, descriptors_.row(i));
     for (const int c : cameras) {
-      const auto& kp = keypoint_point_[c];
-      const auto it = std::find(kp.begin(), kp.end(), i);
-      if (it != kp.end()) map_.addPointObservation(id, ids_[c], static_cast<int>(it - kp.begin()));
+      const int keypoint = testing::keypointOf(keypoint_point_[c], i);
+      if (keypoint >= 0) map_.addPointObservation(id, ids_[c], keypoint);
     }
     return id;
   }

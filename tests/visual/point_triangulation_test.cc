@@ -31,10 +31,7 @@ struct TwoViews {
   std::vector<int> point_of[2];  // per keyframe: scene point of each keypoint
   std::vector<int> to_make;      // scene points seen by both without a landmark
 
-  int keypointOf(int view, int point) const {
-    const auto it = std::find(point_of[view].begin(), point_of[view].end(), point);
-    return it == point_of[view].end() ? -1 : static_cast<int>(it - point_of[view].begin());
-  }
+  int keypointOf(int view, int point) const { return testing::keypointOf(point_of[view], point); }
 };
 
 TwoViews twoViews(SyntheticScene scene) {

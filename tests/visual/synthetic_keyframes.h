@@ -1,6 +1,7 @@
 #pragma once
 // Keyframes observing a synthetic scene's points exactly, for the tests of
 // the map modules (triangulation, merging, culling, local mapping).
+#include <algorithm>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -33,6 +34,12 @@ inline Keyframe observePoints(const SyntheticScene& scene, const Eigen::Isometry
     point_of_keypoint.push_back(static_cast<int>(i));
   }
   return kf;
+}
+
+// The keypoint observing scene point `point` (observePoints' point_of_keypoint), -1 if none.
+inline int keypointOf(const std::vector<int>& point_of_keypoint, int point) {
+  const auto it = std::find(point_of_keypoint.begin(), point_of_keypoint.end(), point);
+  return it == point_of_keypoint.end() ? -1 : static_cast<int>(it - point_of_keypoint.begin());
 }
 
 // Distinct random ORB descriptors, one row per scene point.
