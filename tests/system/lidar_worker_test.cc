@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -44,15 +45,17 @@ struct WorkerRun {
   Trajectory camera_poses;  // lidar_camera_poses of every answer, in order
 };
 
-// Scans at 0.1 s steps except those in `missing`, two camera frames per
-// sweep (3 and 7 hundredths in), handed on in time order as the pipeline
-// does: the end of the sweep before each scan, the scan, its frames.
 SystemConfig lidarMode() {
   SystemConfig config;
   config.mode = RunMode::kLidar;
   config.loop.enabled = false;
   return config;
 }
+
+// Scans at 0.1 s steps except those in `missing`, two camera frames per
+// sweep (3 and 7 hundredths in), then `extra_frames`, handed on in time
+// order as the pipeline does: the end of the sweep before each scan, the
+// scan, its frames.
 
 WorkerRun runWorker(int sweeps, const std::vector<int>& missing, const std::vector<double>& extra_frames = {},
                     const SystemConfig& config = lidarMode(), const Calibration& calibration = {}) {
