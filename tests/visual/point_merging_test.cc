@@ -10,50 +10,26 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/visual/tracking/local_keyframes.h"
-#include "synthetic_scene.h"
+#include "visual/synthetic_keyframes.h"
 
 namespace lvslam::visual {
 namespace {
-
-// A keyframe observing every visible scene point exactly, with a distinct
-// random descriptor per scene point (the same in every keyframe).
-Keyframe observe(const testing::SyntheticScene& scene, int camera, const cv::Mat& descriptors,
-                 std::vector<int>& point_of_keypoint) {
-  Keyframe kf;
-  kf.T_camera_world = scene.T_camera_world[camera];
-  kf.features.width = scene.width;
-  kf.features.height = scene.height;
-  kf.features.pyramid = {{1.0, 1.2}, {1.0, 1.0 / 1.44}};
-  point_of_keypoint.clear();
-  for (size_t i = 0; i < scene.points.size(); ++i) {
-    const Eigen::Vector3d px = scene.project(kf.T_camera_world, scene.points[i]);
-    if (!scene.visible(px)) continue;
-    cv::KeyPoint kp(static_cast<float>(px.x()), static_cast<float>(px.y()), 31.0f);
-    kp.octave = 0;
-    kf.features.keypoints.push_back(kp);
-    kf.features.points.push_back(px.head<2>());
-    kf.features.descriptors.push_back(descriptors.row(static_cast<int>(i)));
-    point_of_keypoint.push_back(static_cast<int>(i));
-  }
-  return kf;
-}
 
 class PointMergingTest : public ::testing::Test {
  protected:
   void SetUp() override {
     scene_ = testing::makeScene(3, 150, 0, 0.3, 7);
-    descriptors_ = cv::Mat(150, 32, CV_8U);
-    cv::randu(descriptors_, 0, 256);
-    for (int c = 0; c < 3; ++c) ids_.push_back(map_.addKeyframe(observe(scene_, c, descriptors_, keypoint_point_[c])));
+    descriptors_ = testing::randomDescriptors(150);
+    for (int c = 0; c < 3; ++c)
+      ids_.push_back(map_.addKeyframe(testing::observePoints(scene_, scene_.T_camera_world[c], descriptors_, keypoint_point_[c])));
   }
 
   // Landmark for scene point i observed by keyframes `cameras` (at its true position + offset).
   int landmark(int i, const std::vector<int>& cameras, const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
     const int id = map_.addPointLandmark(scene_.points[i] + offset, descriptors_.row(i));
     for (const int c : cameras) {
-      const auto& kp = keypoint_point_[c];
-      const auto it = std::find(kp.begin(), kp.end(), i);
-      if (it != kp.end()) map_.addPointObservation(id, ids_[c], static_cast<int>(it - kp.begin()));
+      const int keypoint = testing::keypointOf(keypoint_point_[c], i);
+      if (keypoint >= 0) map_.addPointObservation(id, ids_[c], keypoint);
     }
     return id;
   }

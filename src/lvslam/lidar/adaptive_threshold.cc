@@ -8,7 +8,8 @@
 namespace lvslam::lidar {
 
 namespace {
-// Deviations below this are noise of a standing robot (kiss-icp's min_motion_th).
+// Deviations below this are noise of a standing robot (kiss-icp's
+// min_motion_th, 0.1 m by default there).
 constexpr double kMinMotion = 0.05;  // metres
 }  // namespace
 

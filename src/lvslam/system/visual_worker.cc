@@ -64,7 +64,9 @@ std::vector<Eigen::Vector2d> VisualWorker::track(visual::ExtractedImage image, d
   record.t = image.timestamp;
   record.extract_ms = extract_ms;
   // With a LiDAR every frame is told its hints, none before the first scan,
-  // so that the visual subsystem never starts a map without metric depth.
+  // so that the visual subsystem passes over a frame whose hints reach too
+  // few keypoints as a map's first view (at most max_unhinted_references
+  // times in a row, VisualSlamConfig; then it starts without metric depth).
   if (slam_.needsDepthHints() && has_lidar_) {
     const Stopwatch watch;
     slam_.setDepthHints(fusion::lidarDepthHints(recent_scans_, image.timestamp, calibration_, hint_max_dt_));
