@@ -23,6 +23,7 @@
 #include "lvslam/io/recording.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/sim/simulate_sequence.h"
+#include "lvslam/system/frame_stats_stream.h"
 #include "lvslam/system/ground_truth_export.h"
 #include "lvslam/system/offline/loop_report.h"
 #include "lvslam/system/run_recording.h"
@@ -102,19 +103,29 @@ int runRun(RunArgs args) {
     progress.update(fmt::format("[{}] {:.1f} s of data: {} images, {} scans ({:.2f}x real time)", args.mode, t - *t0,
                                 images, scans, wall > 0.0 ? (t - *t0) / wall : 0.0));
   };
-  // trajectory.tum grows pose by pose as the online output makes them (one
-  // per camera frame; without a camera it is the LiDAR's scan trajectory,
-  // written at the end), so a killed run leaves what it had.
+  // trajectory.tum and stats_frames.jsonl grow frame by frame as the online
+  // output makes them (one per camera frame; without a camera the trajectory
+  // is the LiDAR's scan trajectory, written at the end), so a killed run
+  // leaves what it had.
   std::optional<TumStream> online_poses;
-  if (recording.source->hasCamera()) online_poses.emplace(args.out_dir + "/trajectory.tum");
+  std::optional<system::FrameStatsStream> frame_stats;
+  if (recording.source->hasCamera()) {
+    online_poses.emplace(args.out_dir + "/trajectory.tum");
+    frame_stats.emplace(args.out_dir + "/stats_frames.jsonl", !args.deterministic);
+  }
   const system::RunResult run = system::runRecording(recording, config, showProgress, [&](const system::FrameOutput& f) {
     if (online_poses && f.T_world_camera) online_poses->add({f.t, *f.T_world_camera});
+    if (frame_stats) frame_stats->add(f);
   });
   online_poses.reset();
+  frame_stats.reset();
   progress.finish();
   // Input that ends in a fault (a cut last scan or image) still gives what was
   // read before it: the outputs are written, then the fault is the one error line.
-  if (run.output.trajectory.empty()) std::filesystem::remove(args.out_dir + "/trajectory.tum");  // the stream's, empty
+  if (run.output.trajectory.empty()) {  // no result: the streams' files go
+    std::filesystem::remove(args.out_dir + "/trajectory.tum");
+    std::filesystem::remove(args.out_dir + "/stats_frames.jsonl");
+  }
   if (run.output.trajectory.empty() && run.records.input_fault) throw *run.records.input_fault;
   if (run.output.trajectory.empty())
     throw std::runtime_error(fmt::format("no result: mode {} gave no pose from {} images and {} scans", args.mode,
