@@ -1,6 +1,9 @@
 #include "lvslam/system/lidar_worker.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include <spdlog/spdlog.h>
 
 #include "lvslam/core/se3.h"
 #include "lvslam/system/stopwatch.h"
@@ -16,6 +19,8 @@ LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibrat
   if (config.mode == RunMode::kFused && calibration.camera) {
     fusion_.emplace(*calibration.camera, calibration.T_camera_lidar, config.fusion);
     fusion_->setLidarFeedback(config.lidar_direction_refinement);
+    extrinsic_check_.emplace(*calibration.camera, config.fusion);
+    extrinsic_source_ = calibration.T_camera_lidar_source;
     // Camera-time poses are only worth handing back when the visual side uses them.
     if (config.visual.visual.use_lidar_pose_priors) T_lidar_camera_ = calibration.T_camera_lidar.inverse();
   }
@@ -56,16 +61,33 @@ FusionAnswer LidarWorker::addFrame(double t, const std::vector<fusion::ImageSegm
     fusion::FusionFrameOutput out = fusion_->processImage(t, segments, odometry_);
     fusion_frame_ = true;
     T_world_lidar_last_frame_ = out.T_world_lidar;
-    record.fusion_ms = watch.ms();
     record.lidar_features = out.result.lidar_features;
     record.lidar_points_refined = out.lidar_points_changed;
     for (const fusion::FusionLine& line : out.result.lines) record.fusion_lines.push_back({line.A, line.B});
     answer.result = std::move(out.result);
+    checkExtrinsic(t, segments);
+    record.fusion_ms = watch.ms();  // the check included: it is fusion work
   }
   frames_waiting_.push_back(frames_.size());
   frames_.push_back(std::move(record));
   answer.lidar_camera_poses.swap(new_camera_poses_);
   return answer;
+}
+
+// Warns once, on the first window after which the LiDAR and image edges
+// are found not to line up.
+void LidarWorker::checkExtrinsic(double t, const std::vector<fusion::ImageSegment>& segments) {
+  recordExtrinsicVerdict(extrinsic_check_->addFrame(
+      scans_.size(), t, fusion_->framework().featuresInCamera(T_world_lidar_last_frame_), segments));
+}
+
+void LidarWorker::recordExtrinsicVerdict(const std::optional<fusion::ExtrinsicVerdict>& verdict) {
+  if (!verdict) return;
+  const bool first_misaligned =
+      verdict->misaligned && std::none_of(extrinsic_verdicts_.begin(), extrinsic_verdicts_.end(),
+                                          [](const fusion::ExtrinsicVerdict& v) { return v.misaligned; });
+  extrinsic_verdicts_.push_back(*verdict);
+  if (first_misaligned) spdlog::warn("{}", fusion::extrinsicWarning(*verdict, extrinsic_source_));
 }
 
 std::vector<double> LidarWorker::keypointDepths(const std::vector<Eigen::Vector2d>& keyframe_keypoints) {
@@ -80,6 +102,7 @@ std::vector<double> LidarWorker::keypointDepths(const std::vector<Eigen::Vector2
 
 void LidarWorker::finish() {
   registerPending();
+  if (extrinsic_check_) recordExtrinsicVerdict(extrinsic_check_->finish());
   frames_provisional_.clear();  // no later sweep: their within-sweep pose stands
   poseWaitingFrames(true, false);
 }

@@ -85,6 +85,22 @@ std::string scanJson(const ScanRecord& s, bool timings) {
   return o.str();
 }
 
+std::string extrinsicCheckJson(const fusion::ExtrinsicVerdict& v) {
+  const auto degrees = [](const Eigen::Vector3d& w) { return eval::jsonArray({w.x() * 180.0 / M_PI, w.y() * 180.0 / M_PI, w.z() * 180.0 / M_PI}); };
+  return JsonObject()
+      .addNumber("t_first", v.t_first)
+      .addNumber("t_last", v.t_last)
+      .addNumber("frames", v.frames)
+      .addCount("associations", v.associations)
+      .addRaw("window_rotation_deg", degrees(v.window_rotation))
+      .addNumber("windows", v.windows)
+      .addRaw("mean_rotation_deg", degrees(v.rotation))
+      .addNumber("misalignment_deg", v.misalignment_deg)
+      .addNumber("sigma_deg", v.sigma_deg)
+      .addRaw("misaligned", v.misaligned ? "true" : "false")
+      .str();
+}
+
 std::string summaryJson(const RunSummary& s, const RunAccuracy& accuracy, bool timings) {
   JsonObject o;
   o.addString("mode", runModeName(s.mode))
@@ -264,6 +280,11 @@ void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records,
       .addRaw("frames", jsonList(frames))
       .addRaw("scans", jsonList(scans));
   if (records.loop) json.addRaw("loop", loopJson(*records.loop));
+  if (!records.extrinsic_checks.empty()) {
+    std::vector<std::string> checks;
+    for (const fusion::ExtrinsicVerdict& v : records.extrinsic_checks) checks.push_back(extrinsicCheckJson(v));
+    json.addRaw("extrinsic_check", jsonList(checks));
+  }
   const std::string stats = json.str();
   writeText(dir / "stats.json", stats + "\n");
   writePointCloudPly((dir / "map.ply").string(), output.lidar_map);
