@@ -120,6 +120,13 @@ TEST(ExtrinsicCheck, WindowsThatDisagreeAreNotCalledMisaligned) {
   EXPECT_FALSE(last->misaligned) << last->misalignment_deg << " +- " << last->sigma_deg;
 }
 
+TEST(ExtrinsicCheck, TheTestLooksAtTheLastWindowsOnly) {
+  const std::vector<ExtrinsicVerdict> verdicts =
+      runWindows(Eigen::Matrix3d::Identity(), 9, ExtrinsicCheck::kMaxWindows + 3, 0.0);
+  ASSERT_EQ(verdicts.size(), static_cast<std::size_t>(ExtrinsicCheck::kMaxWindows + 3));
+  EXPECT_EQ(verdicts.back().windows, ExtrinsicCheck::kMaxWindows);
+}
+
 TEST(ExtrinsicCheck, TheFirstBlockIsSkippedWhileTheAccumulationFills) {
   FusionConfig config;
   ExtrinsicCheck check(testCamera(), config);

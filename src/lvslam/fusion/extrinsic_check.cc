@@ -149,6 +149,7 @@ ExtrinsicVerdict ExtrinsicCheck::closeWindow() {
   if (rotation) {
     v.window_rotation = *rotation;
     window_rotations_.push_back(*rotation);
+    if (window_rotations_.size() > static_cast<std::size_t>(kMaxWindows)) window_rotations_.erase(window_rotations_.begin());
   }
   const int n = static_cast<int>(window_rotations_.size());
   v.windows = n;
