@@ -1,9 +1,6 @@
 #include "lvslam/system/lidar_worker.h"
 
-#include <algorithm>
 #include <cmath>
-
-#include <spdlog/spdlog.h>
 
 #include "lvslam/core/se3.h"
 #include "lvslam/system/stopwatch.h"
@@ -20,7 +17,6 @@ LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibrat
     fusion_.emplace(*calibration.camera, calibration.T_camera_lidar, config.fusion);
     fusion_->setLidarFeedback(config.lidar_direction_refinement);
     extrinsic_check_.emplace(*calibration.camera, config.fusion);
-    extrinsic_source_ = calibration.T_camera_lidar_source;
     // Camera-time poses are only worth handing back when the visual side uses them.
     if (config.visual.visual.use_lidar_pose_priors) T_lidar_camera_ = calibration.T_camera_lidar.inverse();
   }
@@ -74,20 +70,18 @@ FusionAnswer LidarWorker::addFrame(double t, const std::vector<fusion::ImageSegm
   return answer;
 }
 
-// Warns once, on the first window after which the LiDAR and image edges
-// are found not to line up.
+// Every window's verdict goes to stats.json (extrinsic_check). No warning
+// line yet: on correct calibrations the simulated scenes' own offsets
+// between LiDAR line features and image edges reach 5 deg (glass), as large
+// as the errors to be found, and the test called one misaligned
+// (docs/benchmarks.md, "The extrinsic check").
 void LidarWorker::checkExtrinsic(double t, const std::vector<fusion::ImageSegment>& segments) {
   recordExtrinsicVerdict(extrinsic_check_->addFrame(
       scans_.size(), t, fusion_->framework().featuresInCamera(T_world_lidar_last_frame_), segments));
 }
 
 void LidarWorker::recordExtrinsicVerdict(const std::optional<fusion::ExtrinsicVerdict>& verdict) {
-  if (!verdict) return;
-  const bool first_misaligned =
-      verdict->misaligned && std::none_of(extrinsic_verdicts_.begin(), extrinsic_verdicts_.end(),
-                                          [](const fusion::ExtrinsicVerdict& v) { return v.misaligned; });
-  extrinsic_verdicts_.push_back(*verdict);
-  if (first_misaligned) spdlog::warn("{}", fusion::extrinsicWarning(*verdict, extrinsic_source_));
+  if (verdict) extrinsic_verdicts_.push_back(*verdict);
 }
 
 std::vector<double> LidarWorker::keypointDepths(const std::vector<Eigen::Vector2d>& keyframe_keypoints) {

@@ -63,8 +63,7 @@ class LidarWorker {
   // first map() point added from its scan on.
   std::optional<loop::LoopClosureResult> finishLoopClosure();
   const std::vector<std::size_t>& mapKeyframeStarts() const { return map_keyframe_starts_; }
-  // The extrinsic check's verdict per window of frames (fused mode); the
-  // first misaligned one was also a warning line.
+  // The extrinsic check's verdict per window of frames (fused mode).
   const std::vector<fusion::ExtrinsicVerdict>& extrinsicVerdicts() const { return extrinsic_verdicts_; }
 
  private:
@@ -81,7 +80,6 @@ class LidarWorker {
   bool fusion_frame_ = false;  // the last frame went through the fusion framework
   Eigen::Isometry3d T_world_lidar_last_frame_ = Eigen::Isometry3d::Identity();  // the fusion framework's, at the last frame
   std::optional<fusion::ExtrinsicCheck> extrinsic_check_;
-  std::string extrinsic_source_;
   std::vector<fusion::ExtrinsicVerdict> extrinsic_verdicts_;
   LidarMapExport map_;
   bool scan_pending_ = false;
