@@ -21,6 +21,7 @@
 #include "lvslam/io/recording.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/sim/simulate_sequence.h"
+#include "lvslam/system/frame_stats_stream.h"
 #include "lvslam/system/run_recording.h"
 #include "lvslam/system/output_folder.h"
 
@@ -98,15 +99,22 @@ int runRun(RunArgs args) {
     progress.update(fmt::format("[{}] {:.1f} s of data: {} images, {} scans ({:.2f}x real time)", args.mode, t - *t0,
                                 images, scans, wall > 0.0 ? (t - *t0) / wall : 0.0));
   };
-  // trajectory.tum grows pose by pose as the online output makes them (one
-  // per camera frame; without a camera it is the LiDAR's scan trajectory,
-  // written at the end), so a killed run leaves what it had.
+  // trajectory.tum and stats_frames.jsonl grow frame by frame as the online
+  // output makes them (one per camera frame; without a camera the trajectory
+  // is the LiDAR's scan trajectory, written at the end), so a killed run
+  // leaves what it had.
   std::optional<TumStream> online_poses;
-  if (recording.source->hasCamera()) online_poses.emplace(args.out_dir + "/trajectory.tum");
+  std::optional<system::FrameStatsStream> frame_stats;
+  if (recording.source->hasCamera()) {
+    online_poses.emplace(args.out_dir + "/trajectory.tum");
+    frame_stats.emplace(args.out_dir + "/stats_frames.jsonl", !args.deterministic);
+  }
   const system::RunResult run = system::runRecording(recording, config, showProgress, [&](const system::FrameOutput& f) {
     if (online_poses && f.T_world_camera) online_poses->add({f.t, *f.T_world_camera});
+    if (frame_stats) frame_stats->add(f);
   });
   online_poses.reset();
+  frame_stats.reset();
   progress.finish();
   finishRunFolder(args.out_dir, recording, run, args.mode, args.deterministic);
   return 0;

@@ -18,7 +18,10 @@ void finishRunFolder(const std::string& out_dir, const Recording& recording, con
                      const std::string& mode, bool deterministic) {
   // Input that ends in a fault (a cut last scan or image) still gives what was
   // read before it: the outputs are written, then the fault is the one error line.
-  if (run.output.trajectory.empty()) std::filesystem::remove(out_dir + "/trajectory.tum");  // the stream's, empty
+  if (run.output.trajectory.empty()) {  // no result: the streams' files go
+    std::filesystem::remove(out_dir + "/trajectory.tum");
+    std::filesystem::remove(out_dir + "/stats_frames.jsonl");
+  }
   if (run.output.trajectory.empty() && run.records.input_fault) throw *run.records.input_fault;
   if (run.output.trajectory.empty())
     throw std::runtime_error(fmt::format("no result: mode {} gave no pose from {} images and {} scans", mode,

@@ -312,6 +312,7 @@ struct CutRun {
   RunResult result;
   std::string cut_file;
   std::vector<std::string> clean_poses, poses;
+  std::vector<std::string> clean_frames, frames;  // stats_frames.jsonl, one record a line
 };
 
 CutRun runCutAtTheEnd(const TempDir& dir, const std::string& sensor) {
@@ -324,6 +325,8 @@ CutRun runCutAtTheEnd(const TempDir& dir, const std::string& sensor) {
   cut.result = runWithoutReportNote(dir, "run --sequence seq --out out" + args);
   cut.clean_poses = linesOf(slurpBinary(dir.file("clean/trajectory.tum")));
   cut.poses = linesOf(slurpBinary(dir.file("out/trajectory.tum")));
+  cut.clean_frames = linesOf(slurpBinary(dir.file("clean/stats_frames.jsonl")));
+  cut.frames = linesOf(slurpBinary(dir.file("out/stats_frames.jsonl")));
   // stats.json's summary says where the run stopped; the maps are written.
   const std::string stats = slurpBinary(dir.file("out/stats.json"));
   EXPECT_NE(stats.find("\"stopped\": {\"where\": \"" + cut.cut_file + "\""), std::string::npos) << stats.substr(0, 2000);
@@ -341,6 +344,9 @@ TEST(FaultMatrix, ACutLastImageKeepsEveryPoseBeforeIt) {
   // causal, so they are the clean run's poses but the last frame's.
   ASSERT_GT(cut.clean_poses.size(), 40u);
   EXPECT_EQ(cut.poses, std::vector<std::string>(cut.clean_poses.begin(), cut.clean_poses.end() - 1));
+  // So are the per-frame records streamed beside them: one per frame up to the cut.
+  ASSERT_EQ(cut.clean_frames.size(), cut.clean_poses.size());
+  EXPECT_EQ(cut.frames, std::vector<std::string>(cut.clean_frames.begin(), cut.clean_frames.end() - 1));
 }
 
 TEST(FaultMatrix, ACutLastScanKeepsThePosesBeforeIt) {
@@ -354,6 +360,10 @@ TEST(FaultMatrix, ACutLastScanKeepsThePosesBeforeIt) {
   const std::size_t settled = cut.poses.size() - 2;  // the last frames' poses came from the shorter run's end
   EXPECT_EQ(std::vector<std::string>(cut.poses.begin(), cut.poses.begin() + settled),
             std::vector<std::string>(cut.clean_poses.begin(), cut.clean_poses.begin() + settled));
+  // Each frame's streamed record is there with its pose, the same as the clean run's.
+  ASSERT_GE(cut.frames.size(), cut.poses.size());
+  EXPECT_EQ(std::vector<std::string>(cut.frames.begin(), cut.frames.begin() + settled),
+            std::vector<std::string>(cut.clean_frames.begin(), cut.clean_frames.begin() + settled));
 }
 
 // Every third point of scans 3..9 set to `value` (x, y and z).

@@ -39,6 +39,7 @@ Recording openBags(const RecordingRequest& request) {
   if (!options.camera_topic.empty() && !preset.camera)
     throw Error(preset_path, "key 'camera': missing required key (the recording has a camera topic)");
   options.calibration = preset.calibration();
+  options.calibration.T_camera_lidar_source = preset_path + ": key 'extrinsics.T_camera_lidar'";
   options.lidar = preset.lidar;
   Recording rec;
   rec.name = std::filesystem::path(request.bag_files.front()).stem().string();

@@ -69,6 +69,12 @@ SequenceReader::SequenceReader(const std::string& directory) : directory_(direct
                 "key 'groundtruth.frame': missing required key (groundtruth.txt exists)");
 }
 
+Calibration SequenceReader::calibration() const {
+  Calibration c = info_.calibration();
+  c.T_camera_lidar_source = (fs::path(directory_) / "sequence.yaml").string() + ": key 'extrinsics.T_camera_lidar'";
+  return c;
+}
+
 bool SequenceReader::hasGroundTruth() const {
   return fileKind((fs::path(directory_) / "groundtruth.txt").string()) == FileKind::kRegular;
 }

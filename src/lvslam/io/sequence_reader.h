@@ -32,7 +32,7 @@ class SequenceReader : public SensorSource {
   // The next image or scan in time order (a scan before an image at the same
   // time stamp); none at the end.
   std::optional<SensorData> next() override;
-  Calibration calibration() const override { return info_.calibration(); }
+  Calibration calibration() const override;
   // A sensor counts when sequence.yaml declares it and its times.txt lists data.
   bool hasCamera() const override { return info_.camera.has_value() && !camera_files_.empty(); }
   bool hasLidar() const override { return info_.lidar.has_value() && !lidar_files_.empty(); }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "lvslam/core/calibration.h"
+#include "lvslam/fusion/extrinsic_check.h"
 #include "lvslam/fusion/fusion_step.h"
 #include "lvslam/lidar/lidar_odometry.h"
 #include "lvslam/system/frame_records.h"
@@ -62,11 +63,15 @@ class LidarWorker {
   // first map() point added from its scan on.
   std::optional<loop::LoopClosureResult> finishLoopClosure();
   const std::vector<std::size_t>& mapKeyframeStarts() const { return map_keyframe_starts_; }
+  // The extrinsic check's verdict per window of frames (fused mode).
+  const std::vector<fusion::ExtrinsicVerdict>& extrinsicVerdicts() const { return extrinsic_verdicts_; }
 
  private:
   void registerPending();
   void poseWaitingFrames(bool extrapolate, bool reliable);
   void offerKeyframe(const lidar::OdometryResult& result);
+  void checkExtrinsic(double t, const std::vector<fusion::ImageSegment>& segments);
+  void recordExtrinsicVerdict(const std::optional<fusion::ExtrinsicVerdict>& verdict);
 
   lidar::LidarOdometry odometry_;
   std::optional<fusion::FusionStep> fusion_;
@@ -74,6 +79,8 @@ class LidarWorker {
   bool keypoint_depths_from_features_;
   bool fusion_frame_ = false;  // the last frame went through the fusion framework
   Eigen::Isometry3d T_world_lidar_last_frame_ = Eigen::Isometry3d::Identity();  // the fusion framework's, at the last frame
+  std::optional<fusion::ExtrinsicCheck> extrinsic_check_;
+  std::vector<fusion::ExtrinsicVerdict> extrinsic_verdicts_;
   LidarMapExport map_;
   bool scan_pending_ = false;
   double pending_prepare_ms_ = 0.0;

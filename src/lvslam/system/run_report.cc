@@ -13,6 +13,7 @@
 #include "lvslam/eval/json_writer.h"
 #include "lvslam/fusion/line_accuracy.h"
 #include "lvslam/io/tum.h"
+#include "lvslam/system/frame_stats_stream.h"
 #include "lvslam/system/offline/loop_report.h"
 
 namespace lvslam::system {
@@ -51,22 +52,8 @@ std::string visualJson(const VisualFrameRecord& v) {
 }
 
 std::string frameJson(const PipelineRecords& records, const SystemOutput& output, std::size_t j, bool timings) {
-  const FrameOutput& f = output.frames[j];
-  JsonObject o;
-  o.addNumber("t", f.t).addString("source", sourceName(f.source)).addRaw("pose", f.T_world_camera ? "true" : "false");
-  if (!f.problem.empty()) o.addString("problem", f.problem);
-  if (f.fused) o.addRaw("fused_with_lidar", "true");
-  if (f.visual_chi_square_per_dof >= 0.0) o.addNumber("visual_chi2_per_dof", f.visual_chi_square_per_dof);
-  if (f.lidar_noise_scale != 1.0) o.addNumber("lidar_noise_scale", f.lidar_noise_scale);
-  if (f.visual_noise_scale != 1.0) o.addNumber("visual_noise_scale", f.visual_noise_scale);
-  if (!f.gated.empty()) {
-    std::vector<std::string> gated;
-    for (const GateEvent& g : f.gated)
-      gated.push_back(JsonObject().addString("factor", factorSourceName(g.source)).addNumber("chi2", g.chi_square)
-                          .addNumber("threshold", g.threshold).addString("reason", g.reason).str());
-    o.addRaw("gated", jsonList(gated));
-  }
-  if (timings) o.addNumber("latency_ms", f.latency_ms);
+  // The online part is what stats_frames.jsonl streamed during the run.
+  JsonObject o = onlineFrameJson(output.frames[j], timings);
   const VisualFrameRecord* v = j < records.visual.size() ? &records.visual[j] : nullptr;
   const LidarFrameRecord* l = j < records.lidar.size() ? &records.lidar[j] : nullptr;
   if (v) o.addRaw("visual", visualJson(*v));
@@ -96,6 +83,22 @@ std::string scanJson(const ScanRecord& s, bool timings) {
       .addNumber("iterations", s.iterations);
   if (timings) o.addRaw("time_ms", JsonObject().addNumber("prepare", s.prepare_ms).addNumber("register", s.register_ms).str());
   return o.str();
+}
+
+std::string extrinsicCheckJson(const fusion::ExtrinsicVerdict& v) {
+  const auto degrees = [](const Eigen::Vector3d& w) { return eval::jsonArray({w.x() * 180.0 / M_PI, w.y() * 180.0 / M_PI, w.z() * 180.0 / M_PI}); };
+  return JsonObject()
+      .addNumber("t_first", v.t_first)
+      .addNumber("t_last", v.t_last)
+      .addNumber("frames", v.frames)
+      .addCount("associations", v.associations)
+      .addRaw("window_rotation_deg", degrees(v.window_rotation))
+      .addNumber("windows", v.windows)
+      .addRaw("mean_rotation_deg", degrees(v.rotation))
+      .addNumber("misalignment_deg", v.misalignment_deg)
+      .addNumber("sigma_deg", v.sigma_deg)
+      .addRaw("misaligned", v.misaligned ? "true" : "false")
+      .str();
 }
 
 std::string summaryJson(const RunSummary& s, const RunAccuracy& accuracy, bool timings) {
@@ -277,6 +280,11 @@ void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records,
       .addRaw("frames", jsonList(frames))
       .addRaw("scans", jsonList(scans));
   if (records.loop) json.addRaw("loop", loopJson(*records.loop));
+  if (!records.extrinsic_checks.empty()) {
+    std::vector<std::string> checks;
+    for (const fusion::ExtrinsicVerdict& v : records.extrinsic_checks) checks.push_back(extrinsicCheckJson(v));
+    json.addRaw("extrinsic_check", jsonList(checks));
+  }
   const std::string stats = json.str();
   writeText(dir / "stats.json", stats + "\n");
   writePointCloudPly((dir / "map.ply").string(), output.lidar_map);

@@ -232,6 +232,7 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool final_map_rel
     records.lidar_map = workers.lidar->map().points();
     records.loop = workers.lidar->finishLoopClosure();
     records.lidar_map_keyframe_starts = workers.lidar->mapKeyframeStarts();
+    records.extrinsic_checks = workers.lidar->extrinsicVerdicts();
   }
   if (workers.visual) {
     records.visual = workers.visual->takeFrames();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "lvslam/core/error.h"
+#include "lvslam/fusion/extrinsic_check.h"
 #include "lvslam/io/ply_writer.h"
 #include "lvslam/io/sensor_source.h"
 #include "lvslam/loop/loop_closure.h"
@@ -39,6 +40,8 @@ struct PipelineRecords {
   std::optional<loop::LoopClosureResult> loop;
   std::vector<std::size_t> lidar_map_keyframe_starts;
   std::vector<MapLine> visual_lines;      // the lines of every visual map, old and current
+  // Fused mode: the extrinsic check's verdict per window of frames.
+  std::vector<fusion::ExtrinsicVerdict> extrinsic_checks;
   // The online output, one per camera frame, each made when its data were in
   // (online/online_output.h), with the detection module's switches and where
   // each visual map sat in the output world.
