@@ -16,24 +16,14 @@
 namespace lvslam::system {
 namespace {
 
-// At twice the room's speed a lap takes about 20 s: two laps and a bit.
-sim::SimOptions twoLaps() {
-  sim::SimOptions o;
-  o.scenario = "room";
-  o.duration = 42.0;
-  o.seed = 1;
-  o.speed_scale = 2.0;
-  return o;
-}
-const char* const kTwoLapsName = "room-42s-seed1-speed2";
-
 struct LoopRun {
   RunResult result;
   Trajectory ground_truth;
 };
 
 LoopRun runTwoLaps(bool loop_closure) {
-  const std::string dir = lvslam::testing::cachedSimulation(kTwoLapsName, twoLaps());
+  // At twice the room's speed a lap takes about 20 s: two laps and a bit.
+  const std::string dir = lvslam::testing::cachedRoom(42.0, 1, 2.0);
   SystemConfig config = loadSystemConfig(YamlConfig::loadFile(std::string(LVSLAM_SOURCE_DIR) + "/config/sim.yaml"));
   config.mode = RunMode::kLidar;
   config.deterministic = true;

@@ -39,16 +39,8 @@ class CutSource : public SensorSource {
   double cut_, sweep_;
 };
 
-sim::SimOptions shortRoom() {
-  sim::SimOptions o;
-  o.scenario = "room";
-  o.duration = 5.0;
-  o.seed = 2;
-  return o;
-}
-
 std::vector<FrameOutput> onlineOutput(RunMode mode, std::optional<double> cut) {
-  const std::string dir = lvslam::testing::cachedSimulation("room-5s-seed2", shortRoom());
+  const std::string dir = lvslam::testing::cachedRoom(5.0, 2);
   SystemConfig config = loadSystemConfig(YamlConfig::loadFile(std::string(LVSLAM_SOURCE_DIR) + "/config/sim.yaml"));
   config.mode = mode;
   config.deterministic = true;

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 
 #include "lvslam/sim/simulate_sequence.h"
@@ -40,6 +41,22 @@ std::string cachedSimulation(const std::string& name, const sim::SimOptions& opt
   const FileLock lock((cache / (name + ".lock")).string());
   sim::simulateSequenceOnce(options, done.string());
   return done.string();
+}
+
+sim::SimOptions roomSimulation(double duration_s, int seed, double speed_scale) {
+  sim::SimOptions o;
+  o.scenario = "room";
+  o.duration = duration_s;
+  o.seed = seed;
+  o.speed_scale = speed_scale;
+  return o;
+}
+
+std::string cachedRoom(double duration_s, int seed, double speed_scale) {
+  std::ostringstream name;
+  name << "room-" << duration_s << "s-seed" << seed;
+  if (speed_scale != 1.0) name << "-speed" << speed_scale;
+  return cachedSimulation(name.str(), roomSimulation(duration_s, seed, speed_scale));
 }
 
 }  // namespace lvslam::testing

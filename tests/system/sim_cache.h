@@ -14,4 +14,10 @@ namespace lvslam::testing {
 // The sequence folder of `name`, simulated with `options` if not cached yet.
 std::string cachedSimulation(const std::string& name, const sim::SimOptions& options);
 
+// The room scenario for `duration_s` seconds at `speed_scale` times its speed.
+sim::SimOptions roomSimulation(double duration_s, int seed, double speed_scale = 1.0);
+// Its sequence folder, cached under a name made from exactly those options
+// ("room-8s-seed1", "room-2s-seed1-speed2").
+std::string cachedRoom(double duration_s, int seed, double speed_scale = 1.0);
+
 }  // namespace lvslam::testing

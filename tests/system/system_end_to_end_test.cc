@@ -19,13 +19,7 @@ namespace lvslam::system {
 namespace {
 
 // 8 s: the robot starts from rest and makes about a third of its loop.
-sim::SimOptions roomOptions() {
-  sim::SimOptions o;
-  o.scenario = "room";
-  o.duration = 8.0;
-  o.seed = 1;
-  return o;
-}
+sim::SimOptions roomOptions() { return lvslam::testing::roomSimulation(8.0, 1); }
 const char* const kRoomName = "room-8s-seed1";
 
 // In its first seconds the young visual map disagrees with the LiDAR now and

@@ -18,15 +18,7 @@ namespace lvslam::system {
 namespace {
 
 // Twice the room's speed: a map starts after a few frames.
-sim::SimOptions fastRoom() {
-  sim::SimOptions o;
-  o.scenario = "room";
-  o.duration = 2.0;
-  o.seed = 1;
-  o.speed_scale = 2.0;
-  return o;
-}
-const char* const kFastRoomName = "room-2s-seed1-speed2";
+std::string fastRoom() { return lvslam::testing::cachedRoom(2.0, 1, 2.0); }
 
 SystemConfig simConfig() {
   SystemConfig config = loadSystemConfig(YamlConfig::loadFile(std::string(LVSLAM_SOURCE_DIR) + "/config/sim.yaml"));
@@ -49,7 +41,7 @@ struct Tracked {
 std::vector<Tracked> feed(VisualWorker& worker, double from, double to,
                           const std::function<void(VisualWorker&, const Tracked&)>& after_track = {}) {
   RecordingRequest request;
-  request.sequence_dir = lvslam::testing::cachedSimulation(kFastRoomName, fastRoom());
+  request.sequence_dir = fastRoom();
   Recording recording = openRecording(request);
   const Calibration calibration = recording.source->calibration();
   visual::FeatureExtractor extractor(simConfig().visual.visual.features, *calibration.camera);
@@ -80,7 +72,7 @@ std::vector<Tracked> feed(VisualWorker& worker, double from, double to,
 
 Calibration calibrationOfTheRoom() {
   RecordingRequest request;
-  request.sequence_dir = lvslam::testing::cachedSimulation(kFastRoomName, fastRoom());
+  request.sequence_dir = fastRoom();
   return openRecording(request).source->calibration();
 }
 
