@@ -98,7 +98,8 @@ std::vector<SuiteSequence> daylightSuite(double duration, int seed) {
 
 // The suite's seed-1 sequences, then (seeds > 1) the daylight ones again with
 // seeds 2..seeds: a fused run scatters by centimetres under changes that
-// leave the mathematics alone (docs/benchmarks.md), so one seed is one draw.
+// leave the mathematics alone (docs/history/2026-11-fusion-sessions.md, "Fused
+// mode over nine sequences"), so one seed is one draw.
 std::vector<SuiteSequence> simulatedSuite(double duration, int seeds) {
   std::vector<SuiteSequence> suite = daylightSuite(duration, 1);
   suite.push_back({"gate-night", suite[2].options});

@@ -1,5 +1,6 @@
 // How precisely the ORB front end finds the same corner again, against the
-// simulator's exact geometry (docs/benchmarks.md, "The visual step"):
+// simulator's exact geometry (docs/history/2026-11-fusion-sessions.md, "The
+// visual step"):
 //   keypoint_accuracy --scenario room|hall|gate [--seed N] [--gap FRAMES]
 // For camera frames every 5 s, each keypoint on a smooth surface is carried
 // by its true depth and the true motion into the image `gap` frames later;

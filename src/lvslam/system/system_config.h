@@ -26,7 +26,8 @@ RunMode parseRunMode(const std::string& name, const std::string& where);
 // to the image time with the camera's motion, or the fusion framework's
 // accumulated LiDAR features (fused mode only). Scans by default: over the
 // 60 s room, hall and gate with seeds 1-3, fused ATE mean 5.3 cm against
-// 7.5 cm with features (docs/benchmarks.md, "Fused mode over nine sequences").
+// 7.5 cm with features (docs/history/2026-11-fusion-sessions.md, "Fused mode
+// over nine sequences").
 enum class KeypointDepthSource { kScans, kFeatures };
 
 struct SystemConfig {

@@ -32,7 +32,7 @@ std::optional<fusion::CameraMotion> motionFromPrevious(const std::vector<VisualF
 // parallax (visual mode, 60 s hall: lost at 21.5 s and 1.74 m without, one
 // map and 4.7 cm with). The fusion framework's depths from accumulated
 // features are not (fused room 4.8 -> 7.6 cm): with those, they stay BA depth
-// terms (docs/benchmarks.md, "Points from keyframe depths").
+// terms (docs/history/2026-11-fusion-sessions.md, "Points from keyframe depths").
 visual::VisualSlamConfig visualSlamConfig(const SystemConfig& config, bool depths_from_scans) {
   visual::VisualSlamConfig c = config.visual;
   c.triangulation.create_depth_points = depths_from_scans;

@@ -4,7 +4,8 @@
 // every landmark (Schur complement; Triggs et al. 2000, "Bundle Adjustment -
 // A Modern Synthesis", Sec. 6.1). This is what Ceres' SPARSE_SCHUR does,
 // without its per-residual-block bookkeeping, which cost more than the
-// algebra in local BA (docs/benchmarks.md, "Local BA without Ceres").
+// algebra in local BA (docs/history/2026-11-fusion-sessions.md, "Local BA
+// without Ceres").
 //
 // Poses have 6 unknowns, points 3 and lines 4. The pose-pose part is block
 // diagonal (no residual touches two poses), so the reduced system is
