@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <optional>
+
 namespace lvslam::system {
 namespace {
 
@@ -25,39 +28,37 @@ Matrix6d isotropic(double sigma_m, double sigma_rad) {
 FusedEstimatorConfig exactConfig() {
   FusedEstimatorConfig c;
   c.lidar_drift_m = c.lidar_drift_deg = 0.0;  // only the stated covariances
+  c.visual_drift_m = c.visual_drift_deg = 0.0;
   c.visual_pixel_sigma = 1.0;
   c.huber_delta = 1e6;
+  c.max_iterations = 50;
   return c;
 }
 
 LidarFrameInput lidarAt(const Eigen::Isometry3d& T, const Matrix6d& information) { return {T, information}; }
 
-// Frame 0 is keyframe 0 of map 0; later frames are tracked against it.
-VisualFrameInput visualAt(const Eigen::Isometry3d& T_map_camera, const Matrix6d& information, int frame) {
+// A pose of map 0, which stands at the world's origin.
+VisualFrameInput visualAt(const Eigen::Isometry3d& T_map_camera, const Matrix6d& information) {
   VisualFrameInput v;
   v.T_map_camera = T_map_camera;
   v.information = information;
-  if (frame == 0) {
-    v.keyframe = 0;
-  } else {
-    v.reference_keyframe = 0;
-    v.T_keyframe_camera = T_map_camera;  // keyframe 0 at the map's origin
-  }
   return v;
 }
 
 TEST(FusedEstimator, TwoSubsystemsGiveTheClosedFormWeightedMean) {
   FusedEstimator estimator(exactConfig());
   const Matrix6d H_lidar = isotropic(0.01, 0.001), H_visual = isotropic(0.005, 0.001);
-  ASSERT_TRUE(estimator.add(0.0, lidarAt(at(0), H_lidar), visualAt(at(0), H_visual, 0)).T_world_camera);
+  ASSERT_TRUE(estimator.add(0.0, lidarAt(at(0), H_lidar), visualAt(at(0), H_visual)).T_world_camera);
   // The LiDAR says 10 cm, vision 11 cm along x; the motion model (no
   // velocity yet) says 0 with sigma 2 m/s x dt.
-  const FusedFrameOutput out = estimator.add(kDt, lidarAt(at(0.10), H_lidar), visualAt(at(0.11), H_visual, 1));
+  const FusedFrameOutput out = estimator.add(kDt, lidarAt(at(0.10), H_lidar), visualAt(at(0.11), H_visual));
   ASSERT_TRUE(out.T_world_camera && out.lidar_used && out.visual_used);
   EXPECT_TRUE(out.gated.empty());
   // Without drift the odometry frame stays where the first pose put it: the
-  // LiDAR pose enters with its own covariance.
-  const double w_lidar = 1.0 / (0.01 * 0.01), w_visual = 1.0 / (0.005 * 0.005);
+  // LiDAR pose enters with its own covariance. The visual map's place in the
+  // world is known only through its poses: without drift vision measures the
+  // step from frame 0, with both poses' covariances.
+  const double w_lidar = 1.0 / (0.01 * 0.01), w_visual = 1.0 / (2.0 * 0.005 * 0.005);
   const double w_motion = 1.0 / ((2.0 * kDt) * (2.0 * kDt));
   const double expected = (w_lidar * 0.10 + w_visual * 0.11) / (w_lidar + w_visual + w_motion);
   EXPECT_NEAR(out.T_world_camera->translation().x(), expected, 1e-7);
@@ -83,7 +84,7 @@ StraightRun straightRun(const Eigen::Vector3d& lidar_offset, const Eigen::Vector
       T_lidar.translation() += lidar_offset;
       T_visual.translation() += visual_offset;
     }
-    run.outputs.push_back(estimator.add(kDt * j, lidarAt(T_lidar, H_lidar), visualAt(T_visual, H_visual, j)));
+    run.outputs.push_back(estimator.add(kDt * j, lidarAt(T_lidar, H_lidar), visualAt(T_visual, H_visual)));
   }
   return run;
 }
@@ -125,7 +126,7 @@ TEST(FusedEstimator, ADegenerateLidarDirectionTakesTheVisualEstimate) {
   FusedFrameOutput last;
   for (int j = 0; j < 40; ++j) {
     const double x = 0.05 * j;
-    last = estimator.add(kDt * j, lidarAt(at(0.0, 0.0, 0.0), H_lidar), visualAt(at(x), H_visual, j));
+    last = estimator.add(kDt * j, lidarAt(at(0.0, 0.0, 0.0), H_lidar), visualAt(at(x), H_visual));
     EXPECT_TRUE(last.gated.empty()) << j;
   }
   ASSERT_TRUE(last.T_world_camera);
@@ -150,7 +151,7 @@ TEST(FusedEstimator, ADirectionTheLidarSeesAgainBringsItsMotionNotItsDeadReckone
     if (j > 0) lidar_x += (j >= 10 && j < 30) ? 0.04 : 0.05;
     const bool blind = j >= 10 && j < 30;
     const FusedFrameOutput out =
-        estimator.add(kDt * j, lidarAt(at(lidar_x), blind ? H_blind_x : H_full), visualAt(at(x), H_visual, j));
+        estimator.add(kDt * j, lidarAt(at(lidar_x), blind ? H_blind_x : H_full), visualAt(at(x), H_visual));
     ASSERT_TRUE(out.T_world_camera);
     EXPECT_TRUE(out.gated.empty()) << j;
     EXPECT_TRUE(out.lidar_used) << j;
@@ -167,16 +168,67 @@ TEST(FusedEstimator, ALidarDropOutIsBridgedByVision) {
     const double x = 0.05 * j;
     std::optional<LidarFrameInput> lidar;
     if (j < 10 || j >= 30) lidar = lidarAt(at(x), H_lidar);
-    out = estimator.add(kDt * j, lidar, visualAt(at(x), H_visual, j));
+    out = estimator.add(kDt * j, lidar, visualAt(at(x), H_visual));
     ASSERT_TRUE(out.T_world_camera);
     EXPECT_NEAR(out.T_world_camera->translation().x(), x, 0.003) << j;
     EXPECT_EQ(out.lidar_used, j < 10 || j >= 30) << j;  // the gap's step: from the last LiDAR pose
   }
 }
 
+// The visual map is corrected at frame 20 (everything in it moves 5 cm
+// along y): from then on vision's poses are in the moved map. Its node
+// carries the correction, so the output does not follow the move.
+TEST(FusedEstimator, AMapCorrectionMovesTheMapNotTheOutput) {
+  FusedEstimator estimator(FusedEstimatorConfig{});
+  const Matrix6d H_lidar = isotropic(0.01, 0.002), H_visual = isotropic(0.002, 0.0005);
+  const Eigen::Isometry3d T_new_old = at(0.0, 0.05);
+  for (int j = 0; j < 40; ++j) {
+    const double x = 0.05 * j;
+    VisualFrameInput v = visualAt(j < 20 ? at(x) : T_new_old * at(x), H_visual);
+    if (j == 20) v.T_new_old = T_new_old;
+    const FusedFrameOutput out = estimator.add(kDt * j, lidarAt(at(x), H_lidar), v);
+    ASSERT_TRUE(out.T_world_camera);
+    EXPECT_TRUE(out.gated.empty()) << j;
+    EXPECT_TRUE(out.visual_used) << j;
+    EXPECT_NEAR(out.T_world_camera->translation().y(), 0.0, 0.002) << j;
+    EXPECT_NEAR(out.T_world_camera->translation().x(), x, 0.002) << j;
+  }
+}
+
+// Vision is lost after frame 8 and the robot stops at frame 9 (x = 0.09);
+// a second map starts at frame 21 with frame 8 as its first view, at its
+// origin. The LiDAR sees nothing along x, and the motion model carries the
+// robot on through the gap: the first view places the new map, so the
+// output comes back to where the robot stands.
+TEST(FusedEstimator, ANewMapIsPlacedByItsFirstView) {
+  FusedEstimator estimator(FusedEstimatorConfig{});
+  Matrix6d H_lidar = isotropic(0.002, 0.0005);
+  H_lidar(0, 0) = 0.0;
+  const Matrix6d H_visual = isotropic(0.004, 0.001);
+  for (int j = 0; j < 40; ++j) {
+    const double x = 0.01 * std::min(j, 9);
+    std::optional<VisualFrameInput> v;
+    if (j <= 8) v = visualAt(at(x), H_visual);
+    if (j >= 21) {
+      v = visualAt(at(x - 0.08), H_visual);
+      v->map_id = 1;
+    }
+    if (j == 21) v->initial_view = StampedPose{kDt * 8, at(0.0)};
+    const FusedFrameOutput out = estimator.add(kDt * j, lidarAt(at(0.0), H_lidar), v);
+    ASSERT_TRUE(out.T_world_camera);
+    if (j <= 8) {
+      EXPECT_NEAR(out.T_world_camera->translation().x(), x, 0.002) << j;
+    } else if (j >= 21) {
+      // Within the stop's share the motion model keeps (without the first
+      // view the output stays where the motion model took it, 12 cm on).
+      EXPECT_NEAR(out.T_world_camera->translation().x(), x, 0.03) << j;
+    }
+  }
+}
+
 TEST(FusedEstimator, NothingBeforeTheFirstLidarPose) {
   FusedEstimator estimator(FusedEstimatorConfig{});
-  EXPECT_FALSE(estimator.add(0.0, std::nullopt, visualAt(at(0), isotropic(0.01, 0.01), 0)).T_world_camera);
+  EXPECT_FALSE(estimator.add(0.0, std::nullopt, visualAt(at(0), isotropic(0.01, 0.01))).T_world_camera);
   EXPECT_TRUE(estimator.nodes().empty());
 }
 

@@ -59,13 +59,16 @@ DetectionConfig loadDetectionConfig(const YamlConfig& n) {
 }
 
 FusedEstimatorConfig loadEstimatorConfig(const YamlConfig& n) {
-  n.requireKnownKeys({"window_s", "visual_pixel_sigma", "lidar_drift_m", "lidar_drift_deg", "motion_accel",
+  n.requireKnownKeys({"window_s", "visual_pixel_sigma", "lidar_drift_m", "lidar_drift_deg", "visual_drift_m",
+                      "visual_drift_deg", "motion_accel",
                       "motion_angular_accel_deg", "gate_accept_after", "huber_delta", "max_iterations"});
   FusedEstimatorConfig c;
   c.window_s = n.getDouble("window_s", c.window_s);
   c.visual_pixel_sigma = n.getDouble("visual_pixel_sigma", c.visual_pixel_sigma);
   c.lidar_drift_m = n.getDouble("lidar_drift_m", c.lidar_drift_m);
   c.lidar_drift_deg = n.getDouble("lidar_drift_deg", c.lidar_drift_deg);
+  c.visual_drift_m = n.getDouble("visual_drift_m", c.visual_drift_m);
+  c.visual_drift_deg = n.getDouble("visual_drift_deg", c.visual_drift_deg);
   c.motion_accel = n.getDouble("motion_accel", c.motion_accel);
   c.motion_angular_accel_deg = n.getDouble("motion_angular_accel_deg", c.motion_angular_accel_deg);
   c.gate_accept_after = n.getInt("gate_accept_after", c.gate_accept_after);
@@ -74,6 +77,7 @@ FusedEstimatorConfig loadEstimatorConfig(const YamlConfig& n) {
   if (!(c.window_s >= 0.0)) n.at("window_s").fail("must not be negative");
   if (!(c.visual_pixel_sigma > 0.0)) n.at("visual_pixel_sigma").fail("must be positive");
   if (!(c.lidar_drift_m >= 0.0 && c.lidar_drift_deg >= 0.0)) n.fail("lidar_drift_m and lidar_drift_deg must be >= 0");
+  if (!(c.visual_drift_m >= 0.0 && c.visual_drift_deg >= 0.0)) n.fail("visual_drift_m and visual_drift_deg must be >= 0");
   if (!(c.motion_accel > 0.0 && c.motion_angular_accel_deg > 0.0))
     n.fail("motion_accel and motion_angular_accel_deg must be positive");
   if (c.gate_accept_after < 0) n.at("gate_accept_after").fail("must not be negative");

@@ -19,6 +19,21 @@ std::optional<int> nodeAtTime(const std::vector<double>& times, const std::vecto
   return *it;
 }
 
+// A drifting frame's (the odometry's, a visual map's) random walk from its
+// previous node to the next: isotropic about the camera, growing with the
+// root of the path between the camera's two poses in that frame, only along
+// directions the pose was `seen` in (the frame slips freely along the
+// others). No drift (no path, or drift off) leaves a floor: the frame held,
+// the information finite.
+Matrix6d driftInformation(const Eigen::Isometry3d& T_frame_previous, const Eigen::Isometry3d& T_frame_camera,
+                          const PseudoInverse& seen, double drift_m, double drift_rad) {
+  constexpr double kRigid = 1e-6;
+  const double root_path = std::sqrt((T_frame_previous.inverse() * T_frame_camera).translation().norm());
+  const Matrix6d drift = isotropicCovariance(std::max(kRigid, drift_m * root_path), std::max(kRigid, drift_rad * root_path));
+  const Matrix6d Ad_inverse = adjointSE3(T_frame_camera.inverse());
+  return Ad_inverse.transpose() * informationOn(seen.range, drift) * Ad_inverse;
+}
+
 }  // namespace
 
 FusedEstimator::FusedEstimator(const FusedEstimatorConfig& config)
@@ -71,63 +86,56 @@ std::optional<FusedEstimator::Candidate> FusedEstimator::lidarFactor(int node, c
   const PseudoInverse seen = pseudoInverse(lidar.information);
   if (seen.rank == 0) return std::nullopt;
   if (!new_start) {  // a new start: the odometry jumped and stayed; its frame takes the jump, the output does not
-    // No drift (no path, or drift off) leaves a floor: the odometry frame held, the information finite.
-    constexpr double kRigid = 1e-6;
-    const double root_path = std::sqrt((previous.T_odom_camera.inverse() * lidar.T_odom_camera).translation().norm());
-    const Matrix6d drift = isotropicCovariance(std::max(kRigid, config_.lidar_drift_m * root_path),
-                                               std::max(kRigid, config_.lidar_drift_deg * kDegToRad * root_path));
-    const Matrix6d Ad_inverse = adjointSE3(lidar.T_odom_camera.inverse());
     accept({previous_odom, odom, Eigen::Isometry3d::Identity(),
-            Ad_inverse.transpose() * informationOn(seen.range, drift) * Ad_inverse, FactorSource::kLidar});
+            driftInformation(previous.T_odom_camera, lidar.T_odom_camera, seen, config_.lidar_drift_m,
+                             config_.lidar_drift_deg * kDegToRad),
+            FactorSource::kLidar});
   }
   return makeCandidate({odom, node, lidar.T_odom_camera, lidar.information, FactorSource::kLidar});
 }
 
-// Where the frame's visual pose is measured from: the keyframe it was
-// tracked against, the map's first view, or (a frame that became a
-// keyframe, or whose keyframe never was a node) the map's previous frame.
-std::optional<int> FusedEstimator::visualFrom(const VisualFrameInput& visual, Eigen::Isometry3d& T_from_to) const {
-  if (visual.initial_reference) {
-    const auto& [keyframe, first_view] = *visual.initial_reference;
-    const std::optional<int> from = nodeAtTime(times_, camera_nodes_, first_view.t);
-    if (!from) return std::nullopt;
-    T_from_to = first_view.T_world_frame.inverse() * visual.T_map_camera;
-    return from;
-  }
-  if (visual.reference_keyframe >= 0) {
-    const auto found = keyframe_nodes_.find({visual.map_id, visual.reference_keyframe});
-    if (found != keyframe_nodes_.end()) {
-      T_from_to = visual.T_keyframe_camera;
-      return found->second;
+// The tracker's pose in its map, seen through a new node of the map's frame
+// (T_world_map): the camera follows that node within the tracker's own
+// covariance, and the node follows the map's previous node within the map's
+// drift over the path between, after the map's own corrections since. A new
+// map is placed by its first view (an earlier frame) when it has one.
+std::optional<FusedEstimator::Candidate> FusedEstimator::visualFactor(int node, const VisualFrameInput& visual,
+                                                                      bool use, bool new_start) {
+  const auto last = last_visual_.find(visual.map_id);
+  if (visual.T_new_old && last != last_visual_.end()) last->second.T_new_old = *visual.T_new_old * last->second.T_new_old;
+  if (!use) return std::nullopt;
+  const double t = times_[static_cast<std::size_t>(node)];
+  const double s = config_.visual_pixel_sigma;
+  const Matrix6d information = visual.information / (s * s);
+  const PseudoInverse seen = pseudoInverse(information);
+  if (seen.rank == 0) return std::nullopt;
+  int map_node = -1;
+  if (last != last_visual_.end()) {
+    const LastVisual held = last->second;
+    const Eigen::Isometry3d T_old_new = held.T_new_old.inverse();
+    map_node = addNode(t, nodes_[static_cast<std::size_t>(held.map_node)].T_world_camera * T_old_new, false);
+    if (!new_start)
+      accept({held.map_node, map_node, T_old_new,
+              driftInformation(held.T_new_old * held.T_map_camera, visual.T_map_camera, seen, config_.visual_drift_m,
+                               config_.visual_drift_deg * kDegToRad),
+              FactorSource::kVisual});
+  } else {
+    const Eigen::Isometry3d& T_world_camera = nodes_[static_cast<std::size_t>(node)].T_world_camera;
+    map_node = addNode(t, T_world_camera * visual.T_map_camera.inverse(), false);
+    const std::optional<int> first =
+        visual.initial_view ? nodeAtTime(times_, camera_nodes_, visual.initial_view->t) : std::nullopt;
+    if (first) {  // measured from the first view's node: the map's frame as that view places it
+      const Eigen::Isometry3d T_first_map = visual.initial_view->T_world_frame.inverse();
+      nodes_[static_cast<std::size_t>(map_node)].T_world_camera =
+          nodes_[static_cast<std::size_t>(*first)].T_world_camera * T_first_map;
+      // The factor map -> first view, turned round to end at the map's node:
+      // its residual is -Ad(T_map_first) times the original one.
+      const Matrix6d Ad = adjointSE3(T_first_map);
+      accept({*first, map_node, T_first_map, Ad.transpose() * information * Ad, FactorSource::kVisual});
     }
   }
-  const auto last = last_visual_.find(visual.map_id);
-  if (last == last_visual_.end()) return std::nullopt;
-  T_from_to = last->second.second.inverse() * visual.T_map_camera;
-  return last->second.first;
-}
-
-std::optional<FusedEstimator::Candidate> FusedEstimator::visualFactor(int node, const VisualFrameInput& visual,
-                                                                      bool use) {
-  if (visual.T_new_old)  // the map moved under its earlier poses
-    if (const auto last = last_visual_.find(visual.map_id); last != last_visual_.end())
-      last->second.second = *visual.T_new_old * last->second.second;
-  std::optional<Candidate> candidate;
-  Eigen::Isometry3d T_from_to;
-  const std::optional<int> from = use ? visualFrom(visual, T_from_to) : std::nullopt;
-  if (from && *from != node) {
-    // The tracker's information is for T_camera_map <- exp(d) T_camera_map,
-    // i.e. T_map_camera <- T_map_camera exp(-d): the same quadratic form.
-    const double s = config_.visual_pixel_sigma;
-    candidate = makeCandidate({*from, node, T_from_to, visual.information / (s * s), FactorSource::kVisual});
-  }
-  if (visual.initial_reference) {
-    const std::optional<int> first = nodeAtTime(times_, camera_nodes_, visual.initial_reference->second.t);
-    if (first) keyframe_nodes_[{visual.map_id, visual.initial_reference->first}] = *first;
-  }
-  if (visual.keyframe >= 0) keyframe_nodes_[{visual.map_id, visual.keyframe}] = node;
-  if (use) last_visual_[visual.map_id] = {node, visual.T_map_camera};
-  return candidate;
+  last_visual_[visual.map_id] = {map_node, visual.T_map_camera, Eigen::Isometry3d::Identity()};
+  return makeCandidate({map_node, node, visual.T_map_camera, information, FactorSource::kVisual});
 }
 
 // Constant velocity from the last two nodes; the platform's acceleration
@@ -210,7 +218,7 @@ FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInp
     VisualFrameInput weighed = *visual;
     weighed.information /= visual_gate_.noiseScale();
     if (jump) out.gated.push_back(*jump);
-    visual_candidate = visualFactor(node, weighed, !jump);
+    visual_candidate = visualFactor(node, weighed, !jump, visual_gate_.restarted());
   }
   std::optional<Candidate> motion;
   if (camera_nodes_.size() >= 2) motion = motionFactor(node, t);

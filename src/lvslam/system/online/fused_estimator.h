@@ -9,10 +9,13 @@
 //    information); consecutive odometry-frame nodes are tied by the
 //    odometry's drift per metre of path (a random walk about the camera),
 //    so scan-to-map registration errors stay white and only drift accumulates;
-//  - visual: the frame's pose relative to the keyframe it was tracked
-//    against (keyframes stay as nodes, fixed once they leave the window), so
-//    re-observing an old part of the map pulls the output back to it;
-//    information from the tracker's Hessian;
+//  - visual: the tracker's camera pose in its map, through the map's own
+//    node (T_world_map, one per frame with a visual pose), its information
+//    from the tracker's Hessian (the pose against the map's landmarks, so
+//    re-observing an old part of the map measures the pose in that map);
+//    consecutive map nodes are tied by the map's drift per metre of path,
+//    exactly as the LiDAR's odometry frame is, and carry the map's own
+//    corrections (T_new_old);
 //  - motion: constant velocity with the robot's acceleration as noise, the
 //    process model that keeps the graph connected and breaks ties.
 // Each subsystem's new pose is first judged against its own previous steps
@@ -37,6 +40,8 @@ struct FusedEstimatorConfig {
   double visual_pixel_sigma = 3.0;  // the tracker's information is at 1 px (ORB level 0)
   double lidar_drift_m = 0.005;     // odometry error growth per sqrt(m) of path (random walk)
   double lidar_drift_deg = 0.03;
+  double visual_drift_m = 0.02;     // the visual map's error growth per sqrt(m) of path
+  double visual_drift_deg = 0.12;
   double motion_accel = 2.0;           // m/s^2 (1 sigma): the platform's acceleration
   double motion_angular_accel_deg = 90.0;  // deg/s^2
   int gate_accept_after = 3;  // gated steps in a row before a jump counts as a new start
@@ -57,14 +62,10 @@ struct VisualFrameInput {
   int map_id = 0;
   Eigen::Isometry3d T_map_camera = Eigen::Isometry3d::Identity();
   Matrix6d information = Matrix6d::Zero();  // the tracker's, at 1 px (left update of T_camera_map)
-  int keyframe = -1;             // this frame became keyframe `keyframe`
-  // Tracked against this keyframe (not itself), and the pose relative to it.
-  int reference_keyframe = -1;
-  Eigen::Isometry3d T_keyframe_camera = Eigen::Isometry3d::Identity();
   // The map was corrected in this frame: earlier poses in it are T_new_old * T.
   std::optional<Eigen::Isometry3d> T_new_old;
-  // The map was initialised in this frame: keyframe id and pose of its first view.
-  std::optional<std::pair<int, StampedPose>> initial_reference;
+  // The map was initialised in this frame: its first view (an earlier frame) in it.
+  std::optional<StampedPose> initial_view;
 };
 
 struct FusedFrameOutput {
@@ -105,10 +106,9 @@ class FusedEstimator {
   int addNode(double t, const Eigen::Isometry3d& T, bool fixed);
   void accept(const PoseFactor& factor);
   std::optional<Candidate> lidarFactor(int node, const LidarFrameInput& lidar, bool new_start);
-  // Registers the frame's keyframe role; the factor only when `use`.
-  std::optional<Candidate> visualFactor(int node, const VisualFrameInput& visual, bool use);
+  // Keeps the map's corrections; the factor only when `use`.
+  std::optional<Candidate> visualFactor(int node, const VisualFrameInput& visual, bool use, bool new_start);
   Candidate motionFactor(int node, double t) const;
-  std::optional<int> visualFrom(const VisualFrameInput& visual, Eigen::Isometry3d& T_from_to) const;
   Candidate makeCandidate(PoseFactor factor) const;
   void solveWindow(int newest);
 
@@ -122,9 +122,14 @@ class FusedEstimator {
   std::vector<int> camera_nodes_;             // in frame order
   // The odometry-frame node of the last LiDAR pose, and that pose.
   std::optional<std::pair<int, LidarFrameInput>> last_lidar_;
-  // Per visual map: the last node with a visual pose and its map pose.
-  std::map<int, std::pair<int, Eigen::Isometry3d>> last_visual_;
-  std::map<std::pair<int, int>, int> keyframe_nodes_;  // (map, keyframe) -> node
+  // Per visual map: its node at the last visual pose, that pose, and the
+  // map's corrections since (p_new = T_new_old p_old).
+  struct LastVisual {
+    int map_node = -1;
+    Eigen::Isometry3d T_map_camera = Eigen::Isometry3d::Identity();
+    Eigen::Isometry3d T_new_old = Eigen::Isometry3d::Identity();
+  };
+  std::map<int, LastVisual> last_visual_;
 };
 
 }  // namespace lvslam::system

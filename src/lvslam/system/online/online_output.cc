@@ -145,33 +145,19 @@ class FusedOnline final : public OnlineOutput {
     in.map_id = r.map_id;
     in.T_map_camera = r.T_world_camera;
     in.information = *r.pose_information;
-    if (r.keyframe) {  // measured from the previous frame, to its pose after local BA
-      in.keyframe = r.reference_keyframe;
-    } else {
-      in.reference_keyframe = r.reference_keyframe;
-      in.T_keyframe_camera = r.T_keyframe_camera;
-    }
     in.T_new_old = r.T_new_old;
-    if (r.initial_reference) in.initial_reference = std::make_pair(r.initial_reference_keyframe, *r.initial_reference);
+    if (r.initial_reference) in.initial_view = *r.initial_reference;
     return in;
   }
 
   // The same with every pose placed on the map's final keyframes
   // (final_visual_poses.h), all in the final map's frame: no corrections.
-  std::optional<VisualFrameInput> finalVisualInput(const VisualFrameRecord& v) {
+  static std::optional<VisualFrameInput> finalVisualInput(const VisualFrameRecord& v) {
     std::optional<VisualFrameInput> in = visualInput(v.result);
     if (!in || !v.T_world_camera_final) return in;
-    const visual::VisualFrameResult& r = v.result;
     in->T_map_camera = *v.T_world_camera_final;
     in->T_new_old.reset();
-    if (in->initial_reference && v.initial_reference_final) {
-      in->initial_reference->second.T_world_frame = *v.initial_reference_final;
-      final_keyframes_[{r.map_id, in->initial_reference->first}] = *v.initial_reference_final;
-    }
-    if (in->keyframe >= 0) final_keyframes_[{r.map_id, in->keyframe}] = *v.T_world_camera_final;
-    const auto keyframe = final_keyframes_.find({r.map_id, in->reference_keyframe});
-    if (in->reference_keyframe >= 0 && keyframe != final_keyframes_.end())
-      in->T_keyframe_camera = keyframe->second.inverse() * *v.T_world_camera_final;
+    if (in->initial_view && v.initial_reference_final) in->initial_view->T_world_frame = *v.initial_reference_final;
     return in;
   }
 
@@ -179,7 +165,6 @@ class FusedOnline final : public OnlineOutput {
   DetectionModule detection_;
   Eigen::Isometry3d T_camera_lidar_;
   bool final_poses_;
-  std::map<std::pair<int, int>, Eigen::Isometry3d> final_keyframes_;  // (map, keyframe) -> final pose
   std::map<int, Eigen::Isometry3d> placements_;
   std::vector<int> camera_nodes_;  // per frame, the estimator's node (-1: none)
 };
