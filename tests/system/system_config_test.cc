@@ -83,6 +83,8 @@ TEST(SystemConfig, EstimatorKeysAreReadAndChecked) {
       "  visual_pixel_sigma: 4\n"
       "  lidar_drift_m: 0.004\n"
       "  lidar_drift_deg: 0.02\n"
+      "  visual_drift_m: 0.03\n"
+      "  visual_drift_deg: 0.2\n"
       "  motion_accel: 3.0\n"
       "  motion_angular_accel_deg: 45.0\n"
       "  gate_accept_after: 5\n"
@@ -92,6 +94,8 @@ TEST(SystemConfig, EstimatorKeysAreReadAndChecked) {
   EXPECT_DOUBLE_EQ(c.estimator.visual_pixel_sigma, 4.0);
   EXPECT_DOUBLE_EQ(c.estimator.lidar_drift_m, 0.004);
   EXPECT_DOUBLE_EQ(c.estimator.lidar_drift_deg, 0.02);
+  EXPECT_DOUBLE_EQ(c.estimator.visual_drift_m, 0.03);
+  EXPECT_DOUBLE_EQ(c.estimator.visual_drift_deg, 0.2);
   EXPECT_DOUBLE_EQ(c.estimator.motion_accel, 3.0);
   EXPECT_DOUBLE_EQ(c.estimator.motion_angular_accel_deg, 45.0);
   EXPECT_EQ(c.estimator.gate_accept_after, 5);
@@ -99,6 +103,7 @@ TEST(SystemConfig, EstimatorKeysAreReadAndChecked) {
   EXPECT_EQ(c.estimator.max_iterations, 5);
   EXPECT_THROW(load("estimator:\n  visual_pixel_sigma: -1\n"), lvslam::Error);
   EXPECT_THROW(load("estimator:\n  lidar_drift_m: -0.001\n"), lvslam::Error);
+  EXPECT_THROW(load("estimator:\n  visual_drift_deg: -0.1\n"), lvslam::Error);
   EXPECT_THROW(load("estimator:\n  motion_accel: 0\n"), lvslam::Error);
   EXPECT_THROW(load("estimator:\n  window_s: .nan\n"), lvslam::Error);
   EXPECT_DOUBLE_EQ(load("estimator:\n  lidar_drift_deg: 0\n").estimator.lidar_drift_deg, 0.0);  // off
