@@ -17,11 +17,11 @@
 
 #include "command.h"
 #include "lvslam/core/error.h"
-#include "lvslam/core/yaml_config.h"
 #include "lvslam/fusion/debug_image.h"
 #include "lvslam/fusion/fusion_step.h"
 #include "lvslam/fusion/lidar_bridge.h"
 #include "lvslam/io/sequence_reader.h"
+#include "lvslam/system/system_config.h"
 
 namespace lvslam::apps {
 
@@ -38,12 +38,13 @@ struct OverlayStats {
 
 class OverlayRun {
  public:
-  OverlayRun(const OverlayArgs& args, const PinholeCamera& camera, const Eigen::Isometry3d& T_camera_lidar)
+  OverlayRun(const OverlayArgs& args, const system::SystemConfig& config, const PinholeCamera& camera,
+             const Eigen::Isometry3d& T_camera_lidar)
       : args_(args),
         camera_(camera),
-        odometry_(loadLidar(args.config_path)),
-        step_(camera, T_camera_lidar, loadFusion(args.config_path)),
-        extractor_(lineConfig(camera)) {}
+        odometry_(config.lidar),
+        step_(camera, T_camera_lidar, config.fusion),
+        extractor_(lineConfig(camera, config.fusion)) {}
 
   // The scan with the camera frames of its interval (previous sweep end, this sweep end].
   void runScan(const LidarScan& scan, std::deque<ImageFrame>& images) {
@@ -60,17 +61,11 @@ class OverlayRun {
   const OverlayStats& stats() const { return stats_; }
 
  private:
-  static lidar::LidarOdometryConfig loadLidar(const std::string& path) {
-    return path.empty() ? lidar::LidarOdometryConfig{} : lidar::loadLidarOdometryConfig(YamlConfig::loadFile(path));
-  }
-  static fusion::FusionConfig loadFusion(const std::string& path) {
-    return path.empty() ? fusion::FusionConfig{} : fusion::loadFusionConfig(YamlConfig::loadFile(path));
-  }
   // LSD as the visual subsystem runs it, without descriptors, down to the fusion's shortest segment.
-  visual::LineExtractorConfig lineConfig(const PinholeCamera& camera) const {
+  static visual::LineExtractorConfig lineConfig(const PinholeCamera& camera, const fusion::FusionConfig& fusion) {
     visual::LineExtractorConfig c;
     c.compute_descriptors = false;
-    c.min_length_ratio = loadFusion(args_.config_path).min_segment_length_px / std::min(camera.width(), camera.height());
+    c.min_length_ratio = fusion.min_segment_length_px / std::min(camera.width(), camera.height());
     return c;
   }
 
@@ -113,7 +108,7 @@ int runOverlay(const OverlayArgs& args) {
     throw Error(args.sequence_dir, "lvslam overlay needs a sequence with a camera and a LiDAR");
   const Calibration calibration = reader.calibration();
   std::filesystem::create_directories(args.out_dir);
-  OverlayRun run(args, *calibration.camera, calibration.T_camera_lidar);
+  OverlayRun run(args, system::loadRunConfig(args.config_path), *calibration.camera, calibration.T_camera_lidar);
   // A scan waits until the stream has passed its sweep's end, so that all
   // camera frames of its interval have arrived.
   std::optional<LidarScan> pending;
@@ -146,7 +141,7 @@ void addOverlayCommand(CLI::App& app, CommandAction& action) {
   cmd->add_option("--sequence", args->sequence_dir, "Sequence folder (docs/sequence-format.md)")->required();
   cmd->add_option("--out", args->out_dir, "Folder for the PNG images")->required();
   cmd->add_option("--every", args->every, "Write every n-th camera frame")->default_val(5);
-  cmd->add_option("--config", args->config_path, "YAML with lidar: and fusion: sections (e.g. config/sim.yaml)");
+  cmd->add_option("--config", args->config_path, "YAML configuration (e.g. config/sim.yaml; its lidar: and fusion: sections are used) over config/advanced.yaml");
   cmd->callback([&action, args] { action = [args] { return runOverlay(*args); }; });
 }
 

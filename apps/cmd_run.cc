@@ -17,7 +17,6 @@
 #include "command.h"
 #include "progress_line.h"
 #include "run_folder.h"
-#include "lvslam/core/yaml_config.h"
 #include "lvslam/io/recording.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/sim/simulate_sequence.h"
@@ -75,8 +74,7 @@ std::string defaultSequence() {
 }
 
 system::SystemConfig loadConfig(const RunArgs& args) {
-  system::SystemConfig config =
-      args.config_path.empty() ? system::SystemConfig{} : system::loadSystemConfig(YamlConfig::loadFile(args.config_path));
+  system::SystemConfig config = system::loadRunConfig(args.config_path);
   config.mode = system::parseRunMode(args.mode, "--mode");
   config.deterministic = args.deterministic;
   config.realtime = args.realtime;
@@ -145,7 +143,7 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
       ->default_val("fused")
       ->check(CLI::IsMember({"lidar", "visual", "fused"}));
   cmd->add_option("--out", args->out_dir, "Output folder")->default_val("out/run");
-  cmd->add_option("--config", args->config_path, "YAML configuration (e.g. config/sim.yaml); defaults otherwise");
+  cmd->add_option("--config", args->config_path, "YAML configuration (e.g. config/sim.yaml) over config/advanced.yaml, which lists every key with its default");
   cmd->add_option("--ablate", args->ablations,
                   "Switch off one of the paper's contributions (repeatable): direction-residual, "
                   "lidar-direction-refinement, fusion-lines")

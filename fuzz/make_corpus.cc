@@ -90,6 +90,7 @@ void writeYamlSeeds(const fs::path& corpus, const fs::path& config_dir) {
   writeBytes(corpus / "sensor_preset" / "lidar_only.yaml",
              "format: lvslam-preset/1\nname: rig\ntopics:\n  lidar: /points\nlidar:\n  rings: 16\n");
   writeBytes(corpus / "config_yaml" / "sim.yaml", slurp(config_dir / "sim.yaml"));
+  writeBytes(corpus / "config_yaml" / "advanced.yaml", slurp(config_dir / "advanced.yaml"));
   writeBytes(corpus / "config_yaml" / "estimator.yaml",
              "estimator:\n  window_s: 1.0\n  huber_delta: 2.0\nsystem:\n  keypoint_depth_source: features\n"
              "  map_voxel: 0.1\ndetection:\n  min_tracked_points: 30\n");

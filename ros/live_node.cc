@@ -7,7 +7,6 @@
 
 #include "run_folder.h"
 #include "lvslam/core/error.h"
-#include "lvslam/core/yaml_config.h"
 #include "lvslam/system/output_folder.h"
 
 namespace lvslam::ros_node {
@@ -22,8 +21,7 @@ std::string modeFor(const NodeParams& p) {
 }
 
 system::SystemConfig loadConfig(const NodeParams& p, const std::string& mode) {
-  system::SystemConfig config =
-      p.config_path.empty() ? system::SystemConfig{} : system::loadSystemConfig(YamlConfig::loadFile(p.config_path));
+  system::SystemConfig config = system::loadRunConfig(p.config_path);
   config.mode = system::parseRunMode(mode, "parameter ~mode");
   config.deterministic = p.deterministic;
   config.realtime = false;  // the topics already arrive at the sensors' pace

@@ -35,7 +35,7 @@ TEST(LoopClosureConfig, ShippedSimPresetEqualsTheDefaults) {
 
 TEST(LoopClosureConfig, NamesTheFileAndTheKeyOfABadValue) {
   using testing::errorMessageOf;
-  EXPECT_EQ(errorMessageOf([] { fromText("loop:\n  kernel: 3\n"); }), "test.yaml: key 'loop': unknown key 'kernel'");
+  EXPECT_EQ(errorMessageOf([] { fromText("loop:\n  kernel: 3\n"); }), "test.yaml: key 'loop.kernel': unknown key (config/advanced.yaml lists every key)");
   EXPECT_EQ(errorMessageOf([] { fromText("loop:\n  max_descriptor_distance: 1.5\n"); }),
             "test.yaml: key 'loop.max_descriptor_distance': must be in (0, 1]");
   EXPECT_EQ(errorMessageOf([] { fromText("loop:\n  loop_kernel: 0\n"); }),

@@ -3,14 +3,16 @@
 #include <gtest/gtest.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/visual/tracking/visual_slam.h"
 #include "support/temp_dir.h"
 
 namespace lvslam::visual {
 namespace {
 
-VisualConfig load(const std::string& text) {
-  return loadVisualConfig(YamlConfig::loadString(text, "test.yaml").at("visual"));
+VisualSlamConfig loadSlam(const std::string& text) {
+  return loadSection<VisualSlamConfig>(YamlConfig::loadString(text, "test.yaml"), "visual");
 }
+VisualConfig load(const std::string& text) { return loadSlam(text).visual; }
 
 // The text fails to load with a message that names `key`.
 void expectErrorNaming(const std::string& text, const std::string& key) {
@@ -26,7 +28,7 @@ TEST(VisualConfig, AbsentKeysKeepDefaultsAndPresentOnesOverride) {
       "  orb: {max_features: 800, num_levels: 6, candidate_factor: 4}\n"
       "  lines: {enabled: false, min_length_ratio: 0.1}\n"
       "  pose: {rounds: 3}\n"
-      "  bundle_adjustment: {window_size: 7, direction_weight: 200.0, use_direction_residual: false}\n"
+      "  bundle_adjustment: {window_size: 7, direction_weight: 200.0}\n"
       "  initializer: {min_parallax_deg: 2.0}\n");
   EXPECT_EQ(c.features.orb.max_features, 800);
   EXPECT_EQ(c.features.orb.num_levels, 6);
@@ -36,16 +38,15 @@ TEST(VisualConfig, AbsentKeysKeepDefaultsAndPresentOnesOverride) {
   EXPECT_EQ(c.pose.rounds, 3);
   EXPECT_EQ(c.local_window.window_size, 7u);
   EXPECT_DOUBLE_EQ(c.local_window.ba.direction_weight, 200.0);
-  EXPECT_FALSE(c.local_window.ba.use_direction_residual);
   EXPECT_DOUBLE_EQ(c.initializer.min_parallax_deg, 2.0);
 }
 
 TEST(VisualConfig, KeypointDepthSection) {
   EXPECT_TRUE(load("visual: {}\n").use_keypoint_depths);
-  const VisualConfig c = load("visual:\n  keypoint_depths: {enabled: false, sigma_ratio: 0.05, huber_delta: 1.5}\n");
-  EXPECT_FALSE(c.use_keypoint_depths);
+  const VisualConfig c = load("visual:\n  keypoint_depths: {sigma_ratio: 0.05, huber_delta: 1.5, chi2: 2.7}\n");
   EXPECT_DOUBLE_EQ(c.local_window.ba.depth_sigma_ratio, 0.05);
   EXPECT_DOUBLE_EQ(c.local_window.ba.depth_huber_delta, 1.5);
+  EXPECT_DOUBLE_EQ(c.local_window.ba.chi2_depth, 2.7);
   expectErrorNaming("visual:\n  keypoint_depths: {sigma_ratio: 0.0}\n", "keypoint_depths");
   EXPECT_THROW(load("visual:\n  keypoint_depths: {sigma: 0.02}\n"), Error);
 }
@@ -126,6 +127,57 @@ TEST(VisualConfig, KeyframesSection) {
   expectErrorNaming("visual:\n  keyframes: {max_intervall: 4}\n", "max_intervall");
 }
 
+// Switching off one of the contributions is --ablate's (direction-residual,
+// keypoint-depths), not a file's.
+TEST(VisualConfig, AblationSwitchesAreNotKeys) {
+  expectErrorNaming("visual:\n  bundle_adjustment: {use_direction_residual: false}\n",
+                    "visual.bundle_adjustment.use_direction_residual");
+  expectErrorNaming("visual:\n  keypoint_depths: {enabled: false}\n", "visual.keypoint_depths.enabled");
+}
+
+// The settings of VisualSlamConfig itself, beside the algorithms' own.
+TEST(VisualConfig, TrackingAndMappingSections) {
+  const VisualSlamConfig d;
+  const VisualSlamConfig c = loadSlam(
+      "visual:\n"
+      "  usability: {min_keypoints: 80, min_brightness: 12}\n"
+      "  initializer: {window_px: 90, min_matches: 60, max_frames: 20, sigma_px: 1.5}\n"
+      "  tracking: {search_radius_px: 12, min_tracked: 25, lidar_pose_buffer: 32}\n"
+      "  relocalization: {frames: 10, candidates: 3, min_inliers: 40}\n"
+      "  point_matching: {check_orientation: false}\n"
+      "  line_matching: {max_offset_px: 50}\n"
+      "  local_keyframes: {max_voted: 15}\n"
+      "  triangulation: {chi2_epipolar: 3.0, max_depth_points: 50}\n"
+      "  culling: {min_found_ratio: 0.3}\n"
+      "  line_depth_check: {fusion_ratio: 0.25}\n"
+      "  bundle_adjustment: {fixed_oldest: 3}\n");
+  EXPECT_EQ(c.min_keypoints, 80);
+  EXPECT_DOUBLE_EQ(c.usability.min_brightness, 12.0);
+  EXPECT_DOUBLE_EQ(c.usability.max_brightness, d.usability.max_brightness);
+  EXPECT_DOUBLE_EQ(c.init_window_px, 90.0);
+  EXPECT_EQ(c.min_init_matches, 60);
+  EXPECT_EQ(c.max_init_frames, 20);
+  EXPECT_DOUBLE_EQ(c.visual.initializer.sigma_px, 1.5);
+  EXPECT_DOUBLE_EQ(c.search_radius_px, 12.0);
+  EXPECT_EQ(c.min_tracked, 25);
+  EXPECT_EQ(c.lidar_pose_buffer, 32u);
+  EXPECT_EQ(c.relocalize_frames, 10);
+  EXPECT_EQ(c.relocalize_candidates, 3u);
+  EXPECT_EQ(c.relocalize_min_inliers, 40);
+  EXPECT_FALSE(c.visual.point_matching.check_orientation);
+  EXPECT_DOUBLE_EQ(c.visual.line_matching.max_offset_px, 50.0);
+  EXPECT_EQ(c.visual.local_map.max_voted, 15u);
+  EXPECT_DOUBLE_EQ(c.triangulation.chi2_epipolar, 3.0);
+  EXPECT_EQ(c.triangulation.max_depth_points, 50);
+  EXPECT_DOUBLE_EQ(c.culling.min_found_ratio, 0.3);
+  EXPECT_DOUBLE_EQ(c.depth_check.fusion_ratio, 0.25);
+  EXPECT_EQ(c.visual.local_window.fixed_oldest, 3);
+  expectErrorNaming("visual:\n  tracking: {search_radius_px: 0}\n", "visual.tracking.search_radius_px");
+  expectErrorNaming("visual:\n  usability: {min_brightness: 250}\n", "visual.usability.min_brightness");
+  expectErrorNaming("visual:\n  relocalization: {candidates: -1}\n", "visual.relocalization.candidates");
+  expectErrorNaming("visual:\n  triangulation: {create_depth_points: true}\n", "create_depth_points");  // the mode's
+}
+
 TEST(VisualConfig, BadValuesAndUnknownKeysNameTheKey) {
   const std::string typo = lvslam::testing::errorMessageOf([] { load("visual:\n  orb: {max_featurs: 10}\n"); });
   EXPECT_NE(typo.find("max_featurs"), std::string::npos) << typo;
@@ -137,6 +189,8 @@ TEST(VisualConfig, BadValuesAndUnknownKeysNameTheKey) {
   EXPECT_THROW(load("visual:\n  pose: {rounds: 0}\n"), Error);
   EXPECT_THROW(load("visual:\n  orb: {max_features: abc}\n"), Error);
   EXPECT_THROW(load("visual: 3\n"), Error);
+  const std::string orb = lvslam::testing::errorMessageOf([] { load("visual:\n  orb: {scale_factor: 0.9}\n"); });
+  EXPECT_NE(orb.find("test.yaml: key 'visual.orb': scale_factor"), std::string::npos) << orb;
 }
 
 }  // namespace

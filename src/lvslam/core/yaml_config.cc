@@ -86,6 +86,10 @@ std::optional<YamlConfig> YamlConfig::find(const std::string& key) const {
   return YamlConfig(node_[key], file_, childPath(key));
 }
 
+YamlConfig YamlConfig::child(const std::string& key) const {
+  return YamlConfig(node_.IsMap() ? node_[key] : YAML::Node(), file_, childPath(key));
+}
+
 std::string YamlConfig::asString() const {
   if (!node_.IsScalar()) fail("expected a scalar");
   return node_.Scalar();

@@ -19,6 +19,8 @@ class YamlConfig {
   // Required child: throws "missing required key" naming the full key path.
   YamlConfig at(const std::string& key) const;
   std::optional<YamlConfig> find(const std::string& key) const;
+  // The child whatever it holds (a null node when absent): for error messages.
+  YamlConfig child(const std::string& key) const;
 
   std::string asString() const;
   double asDouble() const;         // finite numbers only

@@ -1,8 +1,9 @@
 #pragma once
-// Parameters of the fusion framework, with the defaults that config/sim.yaml
-// repeats under its `fusion:` section.
+// Parameters of the fusion framework, with the defaults that
+// config/advanced.yaml shows under its `fusion:` section.
 #include <string>
 
+#include "lvslam/core/config_keys.h"
 #include "lvslam/core/yaml_config.h"
 
 namespace lvslam::fusion {
@@ -27,10 +28,12 @@ struct FusionConfig {
   int accumulated_scans = 5;              // the current and the last four scans
 };
 
+// The keys of the `fusion:` section, bound to `config`.
+ConfigKeys configKeys(FusionConfig& config);
 // Reads the `fusion` section of a YAML file (absent: defaults). Unknown or
 // malformed keys throw lvslam::Error naming the file and the key.
 FusionConfig loadFusionConfig(const YamlConfig& root);
-// Throws lvslam::Error(where, "key 'fusion.<name>': ...") on values that cannot work.
-void validate(const FusionConfig& config, const std::string& where);
+// Throws lvslam::Error(file, "key 'fusion.<name>': ...") on values that cannot work.
+void validate(const FusionConfig& config, const std::string& file);
 
 }  // namespace lvslam::fusion

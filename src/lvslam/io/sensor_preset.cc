@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "lvslam/core/config_dir.h"
 #include "lvslam/core/error.h"
 #include "lvslam/core/yaml_config.h"
 
@@ -49,9 +50,9 @@ SensorPreset loadSensorPreset(const std::string& path) {
 
 std::string findSensorPreset(const std::string& name_or_path) {
   if (std::filesystem::is_regular_file(name_or_path)) return name_or_path;
-  const std::filesystem::path in_config = std::filesystem::path(LVSLAM_CONFIG_DIR) / (name_or_path + ".yaml");
+  const std::filesystem::path in_config = std::filesystem::path(configDir()) / (name_or_path + ".yaml");
   if (std::filesystem::is_regular_file(in_config)) return in_config.string();
-  throw Error(name_or_path, fmt::format("no such preset file, nor a preset '{}' in {}", name_or_path, LVSLAM_CONFIG_DIR));
+  throw Error(name_or_path, fmt::format("no such preset file, nor a preset '{}' in {}", name_or_path, configDir()));
 }
 
 }  // namespace lvslam

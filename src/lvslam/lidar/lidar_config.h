@@ -1,8 +1,10 @@
 #pragma once
 // Every tunable of the LiDAR subsystem (MULLS-style odometry), with the
-// defaults that config/sim.yaml repeats under its `lidar:` section.
+// defaults that config/advanced.yaml shows under its `lidar:` section.
 #include <cstddef>
+#include <string>
 
+#include "lvslam/core/config_keys.h"
 #include "lvslam/core/yaml_config.h"
 
 namespace lvslam::lidar {
@@ -101,10 +103,12 @@ struct LidarOdometryConfig {
   double max_time_gap = 0.5;   // seconds between scans; longer: motion unknown
 };
 
+// The keys of the `lidar:` section ("preprocess.min_range"), bound to `config`.
+ConfigKeys configKeys(LidarOdometryConfig& config);
 // Reads the `lidar` section of a YAML file (absent: defaults). Unknown or
 // malformed keys throw lvslam::Error naming the file and the key.
 LidarOdometryConfig loadLidarOdometryConfig(const YamlConfig& root);
-// Throws lvslam::Error(where, ...) on values that cannot work (negative sizes...).
-void validate(const LidarOdometryConfig& config, const std::string& where);
+// Throws lvslam::Error(file, "key 'lidar.<key>': ...") on values that cannot work.
+void validate(const LidarOdometryConfig& config, const std::string& file);
 
 }  // namespace lvslam::lidar

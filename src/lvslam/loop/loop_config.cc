@@ -1,63 +1,53 @@
 #include "lvslam/loop/loop_config.h"
 
+#include <utility>
+
 namespace lvslam::loop {
 
-namespace {
-
-ScanContextConfig loadScanContextConfig(const YamlConfig& n) {
-  n.requireKnownKeys({"rings", "sectors", "max_radius", "height_offset"});
-  ScanContextConfig c;
-  c.rings = n.getInt("rings", c.rings);
-  c.sectors = n.getInt("sectors", c.sectors);
-  c.max_radius = n.getDouble("max_radius", c.max_radius);
-  c.height_offset = n.getDouble("height_offset", c.height_offset);
-  if (c.rings < 1) n.at("rings").fail("must be at least 1");
-  if (c.sectors < 2) n.at("sectors").fail("must be at least 2");
-  if (!(c.max_radius > 0.0)) n.at("max_radius").fail("must be positive");
-  return c;
+ConfigKeys configKeys(LoopClosureConfig& c) {
+  ConfigKeys keys;
+  keys.add("enabled", c.enabled)
+      .add("keyframe_distance", c.keyframe_distance)
+      .add("keyframe_angle_deg", c.keyframe_angle_deg)
+      .add("scan_context.rings", c.scan_context.rings)
+      .add("scan_context.sectors", c.scan_context.sectors)
+      .add("scan_context.max_radius", c.scan_context.max_radius)
+      .add("scan_context.height_offset", c.scan_context.height_offset)
+      .add("exclude_recent_path", c.exclude_recent_path)
+      .add("ring_key_candidates", c.ring_key_candidates)
+      .add("max_descriptor_distance", c.max_descriptor_distance)
+      .add("submap_keyframes", c.submap_keyframes)
+      .add("max_rms", c.max_rms)
+      .add("min_inlier_ratio", c.min_inlier_ratio)
+      .add("odometry_sigma_m", c.odometry_sigma_m)
+      .add("odometry_sigma_deg", c.odometry_sigma_deg)
+      .add("odometry_gate_sigmas", c.odometry_gate_sigmas)
+      .add("loop_sigma_m", c.loop_sigma_m)
+      .add("loop_sigma_deg", c.loop_sigma_deg)
+      .add("loop_kernel", c.loop_kernel);
+  return keys;
 }
 
-void requirePositive(const YamlConfig& n, const std::string& key, double value) {
-  if (!(value > 0.0)) n.at(key).fail("must be positive");
-}
+LoopClosureConfig loadLoopClosureConfig(const YamlConfig& root) { return loadSection<LoopClosureConfig>(root, "loop"); }
 
-}  // namespace
-
-LoopClosureConfig loadLoopClosureConfig(const YamlConfig& root) {
-  LoopClosureConfig c;
-  const auto found = root.find("loop");
-  if (!found) return c;
-  const YamlConfig& n = *found;
-  n.requireKnownKeys({"enabled", "keyframe_distance", "keyframe_angle_deg", "scan_context", "exclude_recent_path",
-                      "ring_key_candidates", "max_descriptor_distance", "submap_keyframes", "max_rms",
-                      "min_inlier_ratio", "odometry_sigma_m", "odometry_sigma_deg", "odometry_gate_sigmas", "loop_sigma_m",
-                      "loop_sigma_deg", "loop_kernel"});
-  c.enabled = n.getBool("enabled", c.enabled);
-  c.keyframe_distance = n.getDouble("keyframe_distance", c.keyframe_distance);
-  c.keyframe_angle_deg = n.getDouble("keyframe_angle_deg", c.keyframe_angle_deg);
-  if (const auto sc = n.find("scan_context")) c.scan_context = loadScanContextConfig(*sc);
-  c.exclude_recent_path = n.getDouble("exclude_recent_path", c.exclude_recent_path);
-  c.ring_key_candidates = n.getInt("ring_key_candidates", c.ring_key_candidates);
-  c.max_descriptor_distance = n.getDouble("max_descriptor_distance", c.max_descriptor_distance);
-  c.submap_keyframes = n.getInt("submap_keyframes", c.submap_keyframes);
-  c.max_rms = n.getDouble("max_rms", c.max_rms);
-  c.min_inlier_ratio = n.getDouble("min_inlier_ratio", c.min_inlier_ratio);
-  c.odometry_sigma_m = n.getDouble("odometry_sigma_m", c.odometry_sigma_m);
-  c.odometry_sigma_deg = n.getDouble("odometry_sigma_deg", c.odometry_sigma_deg);
-  c.odometry_gate_sigmas = n.getDouble("odometry_gate_sigmas", c.odometry_gate_sigmas);
-  c.loop_sigma_m = n.getDouble("loop_sigma_m", c.loop_sigma_m);
-  c.loop_sigma_deg = n.getDouble("loop_sigma_deg", c.loop_sigma_deg);
-  c.loop_kernel = n.getDouble("loop_kernel", c.loop_kernel);
-  for (const char* key : {"keyframe_distance", "keyframe_angle_deg", "max_rms", "odometry_sigma_m",
-                          "odometry_sigma_deg", "odometry_gate_sigmas", "loop_sigma_m", "loop_sigma_deg", "loop_kernel"})
-    if (n.has(key)) requirePositive(n, key, n.at(key).asDouble());
-  if (!(c.exclude_recent_path >= 0.0)) n.at("exclude_recent_path").fail("must not be negative");
-  if (c.ring_key_candidates < 1) n.at("ring_key_candidates").fail("must be at least 1");
-  if (!(c.max_descriptor_distance > 0.0 && c.max_descriptor_distance <= 1.0))
-    n.at("max_descriptor_distance").fail("must be in (0, 1]");
-  if (c.submap_keyframes < 0) n.at("submap_keyframes").fail("must not be negative");
-  if (!(c.min_inlier_ratio >= 0.0 && c.min_inlier_ratio <= 1.0)) n.at("min_inlier_ratio").fail("must be in [0, 1]");
-  return c;
+void validate(const LoopClosureConfig& c, const std::string& file) {
+  const ValueCheck check(file, "loop");
+  check(c.scan_context.rings >= 1, "scan_context.rings", "must be at least 1");
+  check(c.scan_context.sectors >= 2, "scan_context.sectors", "must be at least 2");
+  check(c.scan_context.max_radius > 0.0, "scan_context.max_radius", "must be positive");
+  for (const auto& [key, value] :
+       {std::pair{"keyframe_distance", c.keyframe_distance}, std::pair{"keyframe_angle_deg", c.keyframe_angle_deg},
+        std::pair{"max_rms", c.max_rms}, std::pair{"odometry_sigma_m", c.odometry_sigma_m},
+        std::pair{"odometry_sigma_deg", c.odometry_sigma_deg}, std::pair{"odometry_gate_sigmas", c.odometry_gate_sigmas},
+        std::pair{"loop_sigma_m", c.loop_sigma_m}, std::pair{"loop_sigma_deg", c.loop_sigma_deg},
+        std::pair{"loop_kernel", c.loop_kernel}})
+    check(value > 0.0, key, "must be positive");
+  check(c.exclude_recent_path >= 0.0, "exclude_recent_path", "must not be negative");
+  check(c.ring_key_candidates >= 1, "ring_key_candidates", "must be at least 1");
+  check(c.max_descriptor_distance > 0.0 && c.max_descriptor_distance <= 1.0, "max_descriptor_distance",
+        "must be in (0, 1]");
+  check(c.submap_keyframes >= 0, "submap_keyframes", "must not be negative");
+  check(c.min_inlier_ratio >= 0.0 && c.min_inlier_ratio <= 1.0, "min_inlier_ratio", "must be in [0, 1]");
 }
 
 }  // namespace lvslam::loop

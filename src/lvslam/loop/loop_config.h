@@ -2,6 +2,9 @@
 // Every tunable of loop closure (the `loop:` section of a YAML file): when a
 // LiDAR scan becomes a keyframe, how places are recognised and verified, and
 // how the global pose graph weighs its edges.
+#include <string>
+
+#include "lvslam/core/config_keys.h"
 #include "lvslam/core/yaml_config.h"
 #include "lvslam/loop/scan_context.h"
 
@@ -41,8 +44,12 @@ struct LoopClosureConfig {
   double loop_kernel = 3.0;
 };
 
+// The keys of the `loop:` section ("scan_context.rings"), bound to `config`.
+ConfigKeys configKeys(LoopClosureConfig& config);
 // Reads the `loop` section of the file (absent: defaults). Unknown keys or
 // values that cannot work throw lvslam::Error naming the file and the key.
 LoopClosureConfig loadLoopClosureConfig(const YamlConfig& root);
+// Throws lvslam::Error(file, "key 'loop.<key>': ...") on values that cannot work.
+void validate(const LoopClosureConfig& config, const std::string& file);
 
 }  // namespace lvslam::loop

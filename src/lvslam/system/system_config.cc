@@ -1,5 +1,8 @@
 #include "lvslam/system/system_config.h"
 
+#include <filesystem>
+
+#include "lvslam/core/config_dir.h"
 #include "lvslam/core/error.h"
 
 namespace lvslam::system {
@@ -37,92 +40,130 @@ void applyAblation(SystemConfig& config, const std::string& name, const std::str
                            "paper-output)");
 }
 
-DetectionConfig loadDetectionConfig(const YamlConfig& n) {
-  n.requireKnownKeys({"min_tracked_points", "min_tracked_lines", "min_inlier_ratio", "min_brightness",
-                      "max_brightness", "min_contrast", "frames_to_recover", "rejoin_step_m", "rejoin_step_deg"});
-  DetectionConfig c;
-  c.min_tracked_points = n.getInt("min_tracked_points", c.min_tracked_points);
-  c.min_tracked_lines = n.getInt("min_tracked_lines", c.min_tracked_lines);
-  c.min_inlier_ratio = n.getDouble("min_inlier_ratio", c.min_inlier_ratio);
-  c.min_brightness = n.getDouble("min_brightness", c.min_brightness);
-  c.max_brightness = n.getDouble("max_brightness", c.max_brightness);
-  c.min_contrast = n.getDouble("min_contrast", c.min_contrast);
-  c.frames_to_recover = n.getInt("frames_to_recover", c.frames_to_recover);
-  c.rejoin_step_m = n.getDouble("rejoin_step_m", c.rejoin_step_m);
-  c.rejoin_step_deg = n.getDouble("rejoin_step_deg", c.rejoin_step_deg);
-  if (c.min_tracked_points < 0 || c.min_tracked_lines < 0) n.fail("tracked minima must not be negative");
-  if (!(c.min_inlier_ratio >= 0.0 && c.min_inlier_ratio <= 1.0)) n.fail("min_inlier_ratio must be in [0, 1]");
-  if (!(c.min_brightness < c.max_brightness)) n.fail("need min_brightness < max_brightness");
-  if (c.frames_to_recover < 1) n.fail("frames_to_recover must be at least 1");
-  if (!(c.rejoin_step_m >= 0.0 && c.rejoin_step_deg >= 0.0)) n.fail("rejoin steps must not be negative");
-  return c;
+ConfigKeys configKeys(DetectionConfig& c) {
+  ConfigKeys keys;
+  keys.add("min_tracked_points", c.min_tracked_points)
+      .add("min_tracked_lines", c.min_tracked_lines)
+      .add("min_inlier_ratio", c.min_inlier_ratio)
+      .add("min_brightness", c.min_brightness)
+      .add("max_brightness", c.max_brightness)
+      .add("min_contrast", c.min_contrast)
+      .add("frames_to_recover", c.frames_to_recover)
+      .add("rejoin_step_m", c.rejoin_step_m)
+      .add("rejoin_step_deg", c.rejoin_step_deg);
+  return keys;
 }
 
-FusedEstimatorConfig loadEstimatorConfig(const YamlConfig& n) {
-  n.requireKnownKeys({"window_s", "visual_pixel_sigma", "lidar_drift_m", "lidar_drift_deg", "visual_drift_m",
-                      "visual_drift_deg", "motion_accel",
-                      "motion_angular_accel_deg", "gate_accept_after", "huber_delta", "max_iterations"});
-  FusedEstimatorConfig c;
-  c.window_s = n.getDouble("window_s", c.window_s);
-  c.visual_pixel_sigma = n.getDouble("visual_pixel_sigma", c.visual_pixel_sigma);
-  c.lidar_drift_m = n.getDouble("lidar_drift_m", c.lidar_drift_m);
-  c.lidar_drift_deg = n.getDouble("lidar_drift_deg", c.lidar_drift_deg);
-  c.visual_drift_m = n.getDouble("visual_drift_m", c.visual_drift_m);
-  c.visual_drift_deg = n.getDouble("visual_drift_deg", c.visual_drift_deg);
-  c.motion_accel = n.getDouble("motion_accel", c.motion_accel);
-  c.motion_angular_accel_deg = n.getDouble("motion_angular_accel_deg", c.motion_angular_accel_deg);
-  c.gate_accept_after = n.getInt("gate_accept_after", c.gate_accept_after);
-  c.huber_delta = n.getDouble("huber_delta", c.huber_delta);
-  c.max_iterations = n.getInt("max_iterations", c.max_iterations);
-  if (!(c.window_s >= 0.0)) n.at("window_s").fail("must not be negative");
-  if (!(c.visual_pixel_sigma > 0.0)) n.at("visual_pixel_sigma").fail("must be positive");
-  if (!(c.lidar_drift_m >= 0.0 && c.lidar_drift_deg >= 0.0)) n.fail("lidar_drift_m and lidar_drift_deg must be >= 0");
-  if (!(c.visual_drift_m >= 0.0 && c.visual_drift_deg >= 0.0)) n.fail("visual_drift_m and visual_drift_deg must be >= 0");
-  if (!(c.motion_accel > 0.0 && c.motion_angular_accel_deg > 0.0))
-    n.fail("motion_accel and motion_angular_accel_deg must be positive");
-  if (c.gate_accept_after < 0) n.at("gate_accept_after").fail("must not be negative");
-  if (!(c.huber_delta > 0.0)) n.at("huber_delta").fail("must be positive");
-  if (c.max_iterations < 1) n.at("max_iterations").fail("must be at least 1");
-  return c;
+void validate(const DetectionConfig& c, const std::string& file) {
+  const ValueCheck check(file, "detection");
+  check(c.min_tracked_points >= 0, "min_tracked_points", "must not be negative");
+  check(c.min_tracked_lines >= 0, "min_tracked_lines", "must not be negative");
+  check(c.min_inlier_ratio >= 0.0 && c.min_inlier_ratio <= 1.0, "min_inlier_ratio", "must be in [0, 1]");
+  check(c.min_brightness < c.max_brightness, "min_brightness", "need min_brightness < max_brightness");
+  check(c.frames_to_recover >= 1, "frames_to_recover", "must be at least 1");
+  check(c.rejoin_step_m >= 0.0, "rejoin_step_m", "must not be negative");
+  check(c.rejoin_step_deg >= 0.0, "rejoin_step_deg", "must not be negative");
+}
+
+// One line per key (and per check below): a new setting of the estimator
+// is a line here, one there and one in config/advanced.yaml.
+ConfigKeys configKeys(FusedEstimatorConfig& c) {
+  ConfigKeys keys;
+  keys.add("window_s", c.window_s);
+  keys.add("visual_pixel_sigma", c.visual_pixel_sigma);
+  keys.add("lidar_drift_m", c.lidar_drift_m);
+  keys.add("lidar_drift_deg", c.lidar_drift_deg);
+  keys.add("visual_drift_m", c.visual_drift_m);
+  keys.add("visual_drift_deg", c.visual_drift_deg);
+  keys.add("motion_accel", c.motion_accel);
+  keys.add("motion_angular_accel_deg", c.motion_angular_accel_deg);
+  keys.add("gate_accept_after", c.gate_accept_after);
+  keys.add("huber_delta", c.huber_delta);
+  keys.add("max_iterations", c.max_iterations);
+  return keys;
+}
+
+void validate(const FusedEstimatorConfig& c, const std::string& file) {
+  const ValueCheck check(file, "estimator");
+  check(c.window_s >= 0.0, "window_s", "must not be negative");
+  check(c.visual_pixel_sigma > 0.0, "visual_pixel_sigma", "must be positive");
+  check(c.lidar_drift_m >= 0.0, "lidar_drift_m", "must not be negative");
+  check(c.lidar_drift_deg >= 0.0, "lidar_drift_deg", "must not be negative");
+  check(c.visual_drift_m >= 0.0, "visual_drift_m", "must not be negative");
+  check(c.visual_drift_deg >= 0.0, "visual_drift_deg", "must not be negative");
+  check(c.motion_accel > 0.0, "motion_accel", "must be positive");
+  check(c.motion_angular_accel_deg > 0.0, "motion_angular_accel_deg", "must be positive");
+  check(c.gate_accept_after >= 0, "gate_accept_after", "must not be negative");
+  check(c.huber_delta > 0.0, "huber_delta", "must be positive");
+  check(c.max_iterations >= 1, "max_iterations", "must be at least 1");
+}
+
+namespace {
+
+// The `system:` section: SystemConfig's own settings.
+ConfigKeys systemKeys(SystemConfig& c) {
+  ConfigKeys keys;
+  keys.add("depth_hint_max_dt", c.depth_hint_max_dt)
+      .add("keypoint_depth_radius_px", c.keypoint_depth_radius_px)
+      .add("keypoint_depth_max_dt", c.keypoint_depth_max_dt)
+      .add("keypoint_depth_source", c.keypoint_depth_source,
+           {{"scans", KeypointDepthSource::kScans}, {"features", KeypointDepthSource::kFeatures}})
+      .add("map_voxel", c.map_voxel)
+      .add("final_map_poses", c.final_map_poses)
+      .add("final_map_relocation", c.final_map_relocation);
+  return keys;
+}
+
+void validateSystem(const SystemConfig& c, const std::string& file) {
+  const ValueCheck check(file, "system");
+  check(c.depth_hint_max_dt > 0.0, "depth_hint_max_dt", "must be positive");
+  check(c.keypoint_depth_radius_px > 0.0, "keypoint_depth_radius_px", "must be positive");
+  check(c.keypoint_depth_max_dt > 0.0, "keypoint_depth_max_dt", "must be positive");
+  check(c.map_voxel > 0.0, "map_voxel", "must be positive");
+}
+
+}  // namespace
+
+ConfigKeys configKeys(SystemConfig& c) {
+  ConfigKeys keys;
+  keys.add("lidar", lidar::configKeys(c.lidar))
+      .add("visual", visual::configKeys(c.visual))
+      .add("fusion", fusion::configKeys(c.fusion))
+      .add("detection", configKeys(c.detection))
+      .add("estimator", configKeys(c.estimator))
+      .add("loop", loop::configKeys(c.loop))
+      .add("system", systemKeys(c));
+  return keys;
+}
+
+void readSystemConfig(SystemConfig& config, const YamlConfig& root) {
+  configKeys(config).read(root);
+  const std::string& file = root.file();
+  lidar::validate(config.lidar, file);
+  visual::validate(config.visual, file);
+  fusion::validate(config.fusion, file);
+  validate(config.detection, file);
+  validate(config.estimator, file);
+  loop::validate(config.loop, file);
+  validateSystem(config, file);
 }
 
 SystemConfig loadSystemConfig(const YamlConfig& root) {
-  // A misspelt section would silently keep all its defaults.
-  root.requireKnownKeys({"lidar", "visual", "fusion", "detection", "estimator", "loop", "system"});
-  SystemConfig c;
-  if (root.find("lidar")) c.lidar = lidar::loadLidarOdometryConfig(root);
-  if (const auto v = root.find("visual")) c.visual.visual = visual::loadVisualConfig(*v);
-  c.fusion = fusion::loadFusionConfig(root);
-  if (const auto d = root.find("detection")) c.detection = loadDetectionConfig(*d);
-  if (const auto f = root.find("estimator")) c.estimator = loadEstimatorConfig(*f);
-  c.loop = loop::loadLoopClosureConfig(root);
-  if (const auto s = root.find("system")) {
-    s->requireKnownKeys({"fusion_lines_in_tracking", "lidar_direction_refinement", "depth_hint_max_dt",
-                         "keypoint_depth_radius_px", "keypoint_depth_max_dt", "keypoint_depth_source",
-                         "map_voxel", "final_map_poses", "final_map_relocation"});
-    c.fusion_lines_in_tracking = s->getBool("fusion_lines_in_tracking", c.fusion_lines_in_tracking);
-    c.lidar_direction_refinement = s->getBool("lidar_direction_refinement", c.lidar_direction_refinement);
-    c.depth_hint_max_dt = s->getDouble("depth_hint_max_dt", c.depth_hint_max_dt);
-    c.keypoint_depth_radius_px = s->getDouble("keypoint_depth_radius_px", c.keypoint_depth_radius_px);
-    c.keypoint_depth_max_dt = s->getDouble("keypoint_depth_max_dt", c.keypoint_depth_max_dt);
-    c.map_voxel = s->getDouble("map_voxel", c.map_voxel);
-    c.final_map_poses = s->getBool("final_map_poses", c.final_map_poses);
-    c.final_map_relocation = s->getBool("final_map_relocation", c.final_map_relocation);
-    if (const auto source = s->find("keypoint_depth_source")) {
-      const std::string name = source->asString();
-      if (name == "scans")
-        c.keypoint_depth_source = KeypointDepthSource::kScans;
-      else if (name == "features")
-        c.keypoint_depth_source = KeypointDepthSource::kFeatures;
-      else
-        source->fail("must be 'scans' or 'features', not '" + name + "'");
-    }
-    if (!(c.keypoint_depth_radius_px > 0.0)) s->at("keypoint_depth_radius_px").fail("must be positive");
-    if (!(c.depth_hint_max_dt > 0.0)) s->at("depth_hint_max_dt").fail("must be positive");
-    if (!(c.keypoint_depth_max_dt > 0.0)) s->at("keypoint_depth_max_dt").fail("must be positive");
-    if (!(c.map_voxel > 0.0)) s->at("map_voxel").fail("must be positive");
-  }
-  return c;
+  SystemConfig config;
+  readSystemConfig(config, root);
+  return config;
+}
+
+std::string advancedConfigPath() { return configDir() + "/advanced.yaml"; }
+
+SystemConfig loadRunConfig(const std::string& path) {
+  SystemConfig config;
+  // The built-in defaults are advanced.yaml's numbers (a test holds them
+  // equal), so a binary that cannot see the file runs the same.
+  if (std::filesystem::is_regular_file(advancedConfigPath()))
+    readSystemConfig(config, YamlConfig::loadFile(advancedConfigPath()));
+  if (!path.empty()) readSystemConfig(config, YamlConfig::loadFile(path));
+  return config;
 }
 
 }  // namespace lvslam::system

@@ -2,10 +2,12 @@
 // Everything the dual system is configured with, one plain struct per box of
 // the paper's Fig. 1, and the switches of the ablation study. Loaded from the
 // sections lidar:, visual:, fusion:, detection:, estimator:, loop: and system:
-// of a YAML file;
-// absent sections keep the defaults, unknown keys are lvslam::Errors.
+// of YAML files, each section a table of keys (configKeys); absent keys keep
+// their value, unknown keys and unworkable values are lvslam::Errors naming
+// the file and the key. config/advanced.yaml shows every key with its default.
 #include <string>
 
+#include "lvslam/core/config_keys.h"
 #include "lvslam/core/yaml_config.h"
 #include "lvslam/fusion/fusion_config.h"
 #include "lvslam/lidar/lidar_config.h"
@@ -38,10 +40,10 @@ struct SystemConfig {
   DetectionConfig detection;
   FusedEstimatorConfig estimator;
   loop::LoopClosureConfig loop;  // LiDAR loop closure: *_refined outputs and the map only
+  // Switched by --ablate only (applyAblation), never by a file.
   // The paper's output (ablation "paper-output"): the visual pose while
   // the detection module trusts it, the LiDAR's chained in otherwise.
   bool paper_output = false;
-  // Ablations (each switches off one of the paper's contributions).
   bool fusion_lines_in_tracking = true;    // fusion lines become visual landmarks
   bool lidar_direction_refinement = true;  // d_v_mean reaches the LiDAR's linear points
   // LiDAR points this close in time to an image give its depth hints.
@@ -80,9 +82,24 @@ void applyAblation(SystemConfig& config, const std::string& name, const std::str
 inline const char* const kAblations[] = {"direction-residual", "lidar-direction-refinement", "fusion-lines",
                                          "keypoint-depths", "paper-output"};
 
-// `root` is the whole file; the mode and the deterministic flag come from the command line.
+// Every key of every section ("lidar.preprocess.min_range"), bound to `config`.
+ConfigKeys configKeys(SystemConfig& config);
+ConfigKeys configKeys(DetectionConfig& config);
+ConfigKeys configKeys(FusedEstimatorConfig& config);
+void validate(const DetectionConfig& config, const std::string& file);
+void validate(const FusedEstimatorConfig& config, const std::string& file);
+
+// The keys `root` (a whole file) holds, read onto `config`, then every
+// section checked; errors name root's file. The mode, the ablations and the
+// deterministic and realtime flags come from the command line.
+void readSystemConfig(SystemConfig& config, const YamlConfig& root);
+// The built-in defaults with `root`'s keys read onto them.
 SystemConfig loadSystemConfig(const YamlConfig& root);
-DetectionConfig loadDetectionConfig(const YamlConfig& section);
-FusedEstimatorConfig loadEstimatorConfig(const YamlConfig& section);
+// config/advanced.yaml of the source tree (lvslam::configDir()): every key
+// with its default and what it does.
+std::string advancedConfigPath();
+// What lvslam run and lvslam_node run with: advanced.yaml, then the user's
+// file `path` (none when empty) over it.
+SystemConfig loadRunConfig(const std::string& path);
 
 }  // namespace lvslam::system

@@ -1,8 +1,10 @@
 #pragma once
-// Every tunable of the visual subsystem in one plain struct, and its YAML
-// section ("visual:" in config/*.yaml). Absent keys keep the defaults;
-// unknown keys and invalid values are lvslam::Errors naming file and key.
-#include "lvslam/core/yaml_config.h"
+// The visual subsystem's algorithm settings in one plain struct, and the
+// keys of the `visual:` section of the configuration (config/advanced.yaml),
+// which also reach VisualSlamConfig's own (tracking/visual_slam.h).
+#include <string>
+
+#include "lvslam/core/config_keys.h"
 #include "lvslam/visual/feature/feature_extractor.h"
 #include "lvslam/visual/initialize/two_view_initializer.h"
 #include "lvslam/visual/match/line_matcher.h"
@@ -25,7 +27,8 @@ struct VisualConfig {
   LocalKeyframeConfig local_map;  // keyframes tracked against, nearby ones included (map reuse)
   KeyframePolicy keyframes;       // when a tracked frame becomes a keyframe
   // LiDAR depth of keyframe keypoints (VisualSlam::setKeypointDepths) enters
-  // local BA as depth residuals (local_window.ba.depth_*); off: ignored.
+  // local BA as depth residuals (local_window.ba.depth_*); off (--ablate
+  // keypoint-depths): ignored.
   bool use_keypoint_depths = true;
   // The LiDAR odometry's pose of keyframes (VisualSlam::addLidarPose) enters
   // local BA as pose priors (local_window.ba.prior_*) and anchors the map
@@ -38,7 +41,10 @@ struct VisualConfig {
   MapCorrectionConfig map_correction;
 };
 
-// `section` is the node of the "visual" key.
-VisualConfig loadVisualConfig(const YamlConfig& section);
+struct VisualSlamConfig;
+// The keys of the `visual:` section ("orb.max_features"), bound to `config`.
+ConfigKeys configKeys(VisualSlamConfig& config);
+// Throws lvslam::Error(file, "key 'visual.<key>': ...") on values that cannot work.
+void validate(const VisualSlamConfig& config, const std::string& file);
 
 }  // namespace lvslam::visual

@@ -30,7 +30,7 @@ struct BundleAdjustmentConfig {
   // cannot dominate).
   double direction_weight = 1000.0;
   double direction_huber_delta = 1.0;
-  bool use_direction_residual = true;
+  bool use_direction_residual = true;  // off only by --ablate direction-residual
   // LiDAR depth of keypoints, used for every observation that has one
   // (residuals/point_depth.h): sigma = ratio * z_lidar, Huber width and
   // outlier bound of the 1-DoF chi2 at 95 %. A depth found to be an outlier
