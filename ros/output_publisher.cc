@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "lvslam/core/se3.h"
+
 namespace lvslam::ros_node {
 
 namespace {
@@ -96,8 +98,17 @@ void OutputPublisher::publishFrame(const system::FrameOutput& frame) {
   odom.header.frame_id = params_.world_frame.c_str();
   odom.child_frame_id = child_frame_.c_str();
   odom.pose.pose = toPose(T_world_child);
-  // The estimator keeps no marginal covariance of its output yet: all zero
-  // (unknown), as REP 105 consumers read it.
+  // The estimator's covariance (fused mode; other modes leave it all zero,
+  // unknown), carried to the child frame: t_child = t_camera + R_camera t_camera_child.
+  if (frame.covariance) {
+    const Eigen::Vector3d lever =
+        params_.base_frame.empty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(params_.T_camera_base.translation());
+    Matrix6d J = Matrix6d::Identity();
+    J.block<3, 3>(0, 3) = -skew(frame.T_world_camera->linear() * lever);
+    const Matrix6d covariance = J * *frame.covariance * J.transpose();
+    for (int i = 0; i < 6; ++i)
+      for (int k = 0; k < 6; ++k) odom.pose.covariance[static_cast<std::size_t>(6 * i + k)] = covariance(i, k);
+  }
   if (last_pose_ && frame.t > last_pose_->first)
     setTwist(odom, last_pose_->second, T_world_child, frame.t - last_pose_->first);
   last_pose_ = {frame.t, T_world_child};

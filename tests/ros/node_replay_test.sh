@@ -24,7 +24,7 @@ cd "$WORK"
 "$LVSLAM" run --sequence seq --deterministic --out run > run.log
 start_roscore
 
-"$RECORDER" /lvslam/odometry odometry.tum > recorder.log 2>&1 &
+"$RECORDER" /lvslam/odometry odometry.tum sigmas.txt > recorder.log 2>&1 &
 recorder=$!
 children+=($recorder)
 "$PROBE" /lvslam probe.txt > probe.log 2>&1 &
@@ -71,6 +71,16 @@ switches=$(sed -n 's/.*fusion:.* \([0-9]*\) switch(es).*/\1/p' node.log)
 read -r diagnostics diag_switches <<< "$(probe diagnostics)"
 [ "$diagnostics" -gt 0 ] && [ "$diag_switches" = "$switches" ] || fail "diagnostics: $(probe diagnostics), the run made $switches switches"
 [[ "$(probe tf_static)" == *"camera>velodyne"* ]] || fail "no static camera -> velodyne transform: $(probe tf_static)"
+
+# Each odometry message after the first (which defines the world: exact)
+# carries the estimator's covariance: every standard deviation positive and
+# finite, the position's below 5 cm (an unobservable direction would show
+# the solver's floor, metres), the rotation's below 2 deg.
+awk 'NR > 1 { for (i = 2; i <= 7; ++i) if (!($i > 0) || $i == "inf" || $i == "nan") bad = 1;
+       if ($2 > 0.05 || $3 > 0.05 || $4 > 0.05 || $5 > 0.035 || $6 > 0.035 || $7 > 0.035) bad = 1 }
+     END { exit !(NR > 1 && !bad) }' sigmas.txt \
+  || fail "odometry covariance missing or implausible: $(head -3 sigmas.txt)"
+echo "odometry sigmas (t, x y z m, rx ry rz rad), first and last: $(head -1 sigmas.txt) / $(tail -1 sigmas.txt)"
 
 ate() { sed -n 's/.*"ate": {"rmse": \([^,]*\),.*/\1/p'; }
 node_gt=$("$LVSLAM" eval --sequence seq --est odometry.tum --json | ate)

@@ -38,6 +38,38 @@ TEST(PoseGraph, TwoFactorsGiveTheInformationWeightedMean) {
   EXPECT_NEAR(rotationAngle(nodes[1].T_world_camera), 0.0, 1e-9);
 }
 
+// The covariance of a node held by one factor from a fixed node is the
+// factor's inverse information, turned into the world frame by the node's
+// rotation (translation and rotation alike); two factors add information.
+TEST(PoseGraph, ANodesCovarianceIsItsInverseInformationInTheWorldFrame) {
+  Eigen::Isometry3d T_z = translation(1.0, 2.0, 3.0);
+  T_z.linear() = expSO3(Eigen::Vector3d(0.2, -0.4, 1.1));
+  Vector6d d;
+  d << 100.0, 400.0, 25.0, 1e4, 4e4, 9e4;
+  const Matrix6d information = d.asDiagonal();
+  std::vector<PoseNode> nodes{{Eigen::Isometry3d::Identity(), true}, {translation(0.9, 2.1, 3.0), false}};
+  const std::vector<PoseFactor> factors{{0, 1, T_z, information, FactorSource::kLidar}};
+  NodeCovariance covariance{1, std::nullopt};
+  PoseGraphSolveConfig config;
+  config.huber_delta = 1e6;
+  config.max_iterations = 50;
+  ASSERT_TRUE(solvePoseGraph(nodes, factors, config, &covariance));
+  ASSERT_TRUE(covariance.covariance);
+  Matrix6d R = Matrix6d::Zero();
+  R.block<3, 3>(0, 0) = R.block<3, 3>(3, 3) = T_z.linear();
+  const Matrix6d expected = R * information.inverse() * R.transpose();
+  EXPECT_LT((*covariance.covariance - expected).norm(), 1e-6 * expected.norm()) << *covariance.covariance;
+
+  // A second, equal factor halves it; the fixed node has none.
+  const std::vector<PoseFactor> twice{factors[0], factors[0]};
+  NodeCovariance halved{1, std::nullopt}, fixed{0, std::nullopt};
+  ASSERT_TRUE(solvePoseGraph(nodes, twice, config, &halved));
+  ASSERT_TRUE(halved.covariance);
+  EXPECT_LT((*halved.covariance - 0.5 * expected).norm(), 1e-6 * expected.norm());
+  ASSERT_TRUE(solvePoseGraph(nodes, factors, config, &fixed));
+  EXPECT_FALSE(fixed.covariance);
+}
+
 TEST(PoseGraph, FixedNodesStayAndAChainIsExact) {
   std::vector<PoseNode> nodes{{translation(1, 0, 0), true}, {Eigen::Isometry3d::Identity(), false},
                               {Eigen::Isometry3d::Identity(), false}};

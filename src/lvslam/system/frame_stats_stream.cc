@@ -1,5 +1,7 @@
 #include "lvslam/system/frame_stats_stream.h"
 
+#include <cmath>
+
 #include "lvslam/core/error.h"
 
 namespace lvslam::system {
@@ -18,6 +20,10 @@ eval::JsonObject onlineFrameJson(const FrameOutput& f, bool timings) {
   if (f.visual_chi_square_per_dof >= 0.0) o.addNumber("visual_chi2_per_dof", f.visual_chi_square_per_dof);
   if (f.lidar_noise_scale != 1.0) o.addNumber("lidar_noise_scale", f.lidar_noise_scale);
   if (f.visual_noise_scale != 1.0) o.addNumber("visual_noise_scale", f.visual_noise_scale);
+  if (f.covariance) {  // the estimator's own uncertainty of this pose (window solved, older frames held)
+    o.addNumber("position_sigma_m", std::sqrt(f.covariance->topLeftCorner<3, 3>().trace()));
+    o.addNumber("rotation_sigma_deg", std::sqrt(f.covariance->bottomRightCorner<3, 3>().trace()) * 180.0 / M_PI);
+  }
   if (!f.gated.empty()) {
     std::string gated = "[";
     for (std::size_t i = 0; i < f.gated.size(); ++i) {

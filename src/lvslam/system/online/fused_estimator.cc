@@ -160,7 +160,7 @@ FusedEstimator::Candidate FusedEstimator::motionFactor(int node, double t) const
   return makeCandidate({previous, node, T_step, information, FactorSource::kMotion});
 }
 
-void FusedEstimator::solveWindow(int newest) {
+std::optional<Matrix6d> FusedEstimator::solveWindow(int newest, int of) {
   const double start = times_[static_cast<std::size_t>(newest)] - config_.window_s;
   int first = newest;
   while (first > 0 && times_[static_cast<std::size_t>(first - 1)] >= start) --first;
@@ -184,9 +184,12 @@ void FusedEstimator::solveWindow(int newest) {
     }
   // Held by the node before the window (its last estimate) when it is reached.
   PoseGraphSolveConfig solve{config_.huber_delta, config_.max_iterations, true};
-  if (!solvePoseGraph(nodes, factors, solve)) return;
+  NodeCovariance covariance;
+  if (const auto found = local.find(of); found != local.end()) covariance.node = found->second;
+  if (!solvePoseGraph(nodes, factors, solve, &covariance)) return std::nullopt;
   for (const auto& [node, index] : local)
     if (node >= first) nodes_[static_cast<std::size_t>(node)] = nodes[static_cast<std::size_t>(index)];
+  return covariance.covariance;
 }
 
 FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInput>& lidar,
@@ -230,7 +233,7 @@ FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInp
   if (motion) accept(motion->factor);
   if (lidar_candidate) accept(lidar_candidate->factor);
   if (visual_candidate) accept(visual_candidate->factor);
-  solveWindow(static_cast<int>(nodes_.size()) - 1);
+  out.covariance = solveWindow(static_cast<int>(nodes_.size()) - 1, node);
   out.T_world_camera = nodes_[static_cast<std::size_t>(node)].T_world_camera;
   out.camera_node = node;
   out.lidar_noise_scale = lidar_gate_.noiseScale();

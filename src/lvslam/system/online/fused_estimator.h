@@ -76,6 +76,9 @@ struct FusedFrameOutput {
   bool lidar_used = false, visual_used = false;     // factors of this frame in the graph
   std::vector<GateEvent> gated;
   double visual_chi_square_per_dof = -1.0;  // of the accepted visual factor at the solution, -1: none
+  // Of T_world_camera in the window (older nodes held): world-frame
+  // translation, then world-frame rotation (pose_graph.h, NodeCovariance).
+  std::optional<Matrix6d> covariance;
 };
 
 class FusedEstimator {
@@ -110,7 +113,8 @@ class FusedEstimator {
   std::optional<Candidate> visualFactor(int node, const VisualFrameInput& visual, bool use, bool new_start);
   Candidate motionFactor(int node, double t) const;
   Candidate makeCandidate(PoseFactor factor) const;
-  void solveWindow(int newest);
+  // Solves the window ending at `newest`; the covariance of node `of`.
+  std::optional<Matrix6d> solveWindow(int newest, int of);
 
   FusedEstimatorConfig config_;
   StepGate lidar_gate_, visual_gate_;

@@ -119,6 +119,7 @@ class FusedOnline final : public OnlineOutput {
     frame.visual_chi_square_per_dof = out.visual_chi_square_per_dof;
     frame.lidar_noise_scale = out.lidar_noise_scale;
     frame.visual_noise_scale = out.visual_noise_scale;
+    frame.covariance = out.covariance;
     return frame;
   }
   void lidarImproved(std::size_t index, const LidarFrameRecord& l) override {

@@ -27,6 +27,8 @@ struct FrameOutput {
   std::vector<GateEvent> gated;          // factors the estimator's chi-square gate dropped
   double visual_chi_square_per_dof = -1.0;  // consistency of the accepted visual factor (-1: none)
   double lidar_noise_scale = 1.0, visual_noise_scale = 1.0;  // covariance multipliers the estimator used
+  // Of T_world_camera, fused mode only: world-frame translation, then rotation.
+  std::optional<Matrix6d> covariance;
   double latency_ms = 0.0;  // output wall time minus the frame's arrival
 };
 

@@ -1,10 +1,14 @@
 #include "lvslam/system/online/pose_graph.h"
 
+#include <algorithm>
 #include <array>
 #include <memory>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 #include <ceres/autodiff_cost_function.h>
+#include <ceres/crs_matrix.h>
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
 #include <ceres/problem.h>
@@ -56,6 +60,46 @@ Eigen::Isometry3d fromBlock(const Block& b) {
   return makePose(Eigen::Quaterniond(b[6], b[3], b[4], b[5]).normalized(), Eigen::Vector3d(b[0], b[1], b[2]));
 }
 
+// The 6x6 block of (J^T J)^-1 of `target` over the problem's free blocks,
+// in the world frame: the manifold's tangent is the translation, then the
+// quaternion's left update, whose delta is half the rotation angle (Ceres:
+// q <- [cos|d|, sin|d| d/|d|] q), so rotation rows scale by 2. A direction no factor reaches (a LiDAR
+// odometry frame along its degenerate axis) gets a tiny floor so the
+// factorisation stands; it does not couple to the target.
+std::optional<Matrix6d> marginalCovariance(ceres::Problem& problem, std::vector<Block>& blocks, std::size_t target) {
+  std::vector<double*> free;
+  int column = -1;
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    double* block = blocks[i].data();
+    if (!problem.HasParameterBlock(block) || problem.IsParameterBlockConstant(block)) continue;
+    if (i == target) column = 6 * static_cast<int>(free.size());
+    free.push_back(block);
+  }
+  if (column < 0) return std::nullopt;
+  ceres::Problem::EvaluateOptions options;
+  options.parameter_blocks = free;
+  ceres::CRSMatrix crs;
+  if (!problem.Evaluate(options, nullptr, nullptr, nullptr, &crs)) return std::nullopt;
+  if (crs.num_cols != 6 * static_cast<int>(free.size())) return std::nullopt;
+  const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor, int>> J(
+      crs.num_rows, crs.num_cols, static_cast<int>(crs.values.size()), crs.rows.data(), crs.cols.data(),
+      crs.values.data());
+  Eigen::SparseMatrix<double> H = Eigen::SparseMatrix<double>(J.transpose()) * J;
+  const double floor = 1e-12 * std::max(1.0, H.diagonal().maxCoeff());
+  for (int k = 0; k < H.cols(); ++k) H.coeffRef(k, k) += floor;
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(H);
+  if (solver.info() != Eigen::Success) return std::nullopt;
+  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(H.cols(), 6);
+  unit.block<6, 6>(column, 0).setIdentity();
+  const Eigen::MatrixXd x = solver.solve(unit);
+  Vector6d to_angle;
+  to_angle << 1.0, 1.0, 1.0, 2.0, 2.0, 2.0;
+  Matrix6d covariance = to_angle.asDiagonal() * x.block<6, 6>(column, 0) * to_angle.asDiagonal();
+  covariance = 0.5 * (covariance + covariance.transpose());
+  if (!covariance.allFinite()) return std::nullopt;
+  return covariance;
+}
+
 }  // namespace
 
 const char* factorSourceName(FactorSource source) {
@@ -80,7 +124,7 @@ double factorChiSquare(const PoseFactor& factor, const std::vector<PoseNode>& no
 }
 
 bool solvePoseGraph(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>& factors,
-                    const PoseGraphSolveConfig& config) {
+                    const PoseGraphSolveConfig& config, NodeCovariance* covariance) {
   if (nodes.empty() || factors.empty()) return true;
   std::vector<Block> blocks;
   blocks.reserve(nodes.size());
@@ -124,6 +168,8 @@ bool solvePoseGraph(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>&
   if (!summary.IsSolutionUsable()) return false;
   for (std::size_t i = 0; i < nodes.size(); ++i)
     if (!nodes[i].fixed) nodes[i].T_world_camera = fromBlock(blocks[i]);
+  if (covariance && covariance->node >= 0 && static_cast<std::size_t>(covariance->node) < blocks.size())
+    covariance->covariance = marginalCovariance(problem, blocks, static_cast<std::size_t>(covariance->node));
   return true;
 }
 

@@ -3,6 +3,7 @@
 // information matrix (possibly singular: a direction a subsystem does not
 // observe gets none), solved by Ceres with a Huber kernel. The online
 // estimator solves a window of it per frame, the offline refinement all of it.
+#include <optional>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -40,9 +41,20 @@ Vector6d factorError(const PoseFactor& factor, const std::vector<PoseNode>& node
 // e^T Omega e at the nodes' poses.
 double factorChiSquare(const PoseFactor& factor, const std::vector<PoseNode>& nodes);
 
+// The covariance of one free node at the solution: the inverse of the
+// Gauss-Newton information (J^T J of the whitened, robustified factors) with
+// the other free nodes marginalised and the fixed ones held. Translation
+// and rotation both in the world frame (t <- t + d_t, R <- exp(d_phi) R),
+// the order of a ROS pose covariance.
+struct NodeCovariance {
+  int node = -1;                     // which node (input)
+  std::optional<Matrix6d> covariance;  // none: the node is not free or not observable
+};
+
 // Optimises the free nodes in place; returns false (nodes unchanged) when
 // the solver failed. A graph without a fixed node is held by its first node.
+// With `covariance`, also that node's covariance at the solution.
 bool solvePoseGraph(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>& factors,
-                    const PoseGraphSolveConfig& config);
+                    const PoseGraphSolveConfig& config, NodeCovariance* covariance = nullptr);
 
 }  // namespace lvslam::system
