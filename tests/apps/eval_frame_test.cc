@@ -1,4 +1,4 @@
-// `lvslam eval` compares in the ground truth's frame (#32 item 2): with
+// `lvslam eval` compares in the ground truth's frame: with
 // --sequence it takes groundtruth.frame and the extrinsic from the folder,
 // and gives the figure `lvslam run` prints for the same trajectory.
 #include <regex>

@@ -1,4 +1,4 @@
-// The fault matrix (#32): a short clean simulated sequence, broken in one way
+// The fault matrix: a short clean simulated sequence, broken in one way
 // per test, run through the real binary. Each case checks the exit code (0
 // ok, 1 no result, 2 bad input), the one stderr line naming the file and the
 // line or key, and what was written. Input faults run `--mode lidar`: they
@@ -287,7 +287,7 @@ TEST(FaultMatrix, EmptyImageIsNamed) {
                      "seq/camera/000005.png: empty file (0 bytes)");
 }
 
-// ---- A recording cut off as a killed recorder leaves it (#32 item 1): the
+// ---- A recording cut off as a killed recorder leaves it: the
 // run goes up to the cut, writes everything it has, then names the fault in
 // one line (exit 2).
 

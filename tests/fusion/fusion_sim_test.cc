@@ -52,7 +52,8 @@ TEST(FusionOnSimulatedFrames, WholeFrameYieldsFusionLinesOnTrueDoorFramesAndWall
 
 // NOT MET YET (disabled, not loosened): on these frames a 1 deg / 3 cm
 // extrinsic error moves the fusion lines' endpoints 17 cm (median) off the
-// true edges; over 3 s of room frames it is 8 cm (docs/benchmarks.md). The
+// true edges; over 3 s of room frames it is 8 cm (docs/benchmarks.md,
+// "Accuracy against the simulator's exact geometry"). The
 // planar case takes the LiDAR plane as given, and a 1 deg rotation shifts a
 // wall 3-5 m away by 5-9 cm before any other error.
 TEST(FusionOnSimulatedFrames, DISABLED_ExtrinsicErrorOfOneDegreeAndThreeCentimetresAtMostDoublesTheErrors) {

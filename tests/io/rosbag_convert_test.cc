@@ -409,8 +409,8 @@ TEST(RosbagConvertBadInput, CloudWithoutXNamesBagTopicAndField) {
                  {bag4, "/velodyne_points", "row_step 0 is shorter than a row of 200 points of point_step 32"});
 }
 
-// ---- The two sensors' clocks checked against each other as a bag is read
-// (#32): clouds at 10 Hz and images at 15 Hz for 2 s, recorded a few ms after
+// ---- The two sensors' clocks checked against each other as a bag is read:
+// clouds at 10 Hz and images at 15 Hz for 2 s, recorded a few ms after
 // their stamps; from image `jump_from` on the camera stamps are shifted by
 // `camera_jump` s (its clock jumped; record times go on), and the images of
 // [gap_from, gap_to) s are not in the bag at all (a drop-out).

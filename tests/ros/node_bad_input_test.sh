@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# lvslam_node under bad input on its topics (issue 31): empty clouds, clouds
+# lvslam_node under bad input on its topics: empty clouds, clouds
 # without per-point time or without z, images in an unreadable encoding or
 # of a size that is not the calibration's, a scan stamped before the last.
 # Each kind three times: each must be logged exactly once, counted in the

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# lvslam_node on a replayed bag (issue 31): a short simulated sequence is
+# lvslam_node on a replayed bag: a short simulated sequence is
 # written as a bag by `lvslam convert to-bag`, played with rosbag play
 # --clock (use_sim_time) into the node on a private roscore; a recorder
 # subscribes to the node's odometry. Checks: the node leaves a run folder as

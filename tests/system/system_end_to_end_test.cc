@@ -126,9 +126,10 @@ TEST(SystemEndToEnd, VisualModeMeetsTheVisualTargetOnAShortRun) {
   EXPECT_EQ(r.accuracy->alignment, eval::Alignment::kSE3);
   EXPECT_EQ(r.summary.visual_maps, 1u);  // never lost in the room
   EXPECT_GE(r.output.trajectory.size(), r.summary.images * 8 / 10);  // initialised within the first 20 %
-  // Issue #5's target is 5 cm on 60 s. Keyframe depths from the deskewed raw
-  // LiDAR points: measured 1.8 cm rmse on these 8 s (2026-11-21; 2.8-4.1 cm
-  // with the metric start alone), 1.9 cm with points made from those depths.
+  // The visual target is 5 cm on 60 s; on these 8 s keyframe depths from the
+  // deskewed raw LiDAR points keep vision well inside 3 cm, which the metric
+  // start alone does not reliably do (docs/history/2026-11-fusion-sessions.md,
+  // "Visual mode: keyframe depths from raw LiDAR points").
   EXPECT_LT(r.accuracy->ate.stats.rmse, 0.03);
 }
 
@@ -167,9 +168,10 @@ TEST(SystemEndToEnd, FusedModeUsesVisionAndStaysAccurate) {
 
 // No sweep from 6 to 8 s. Frames in the gap have no LiDAR measurement (the
 // LiDAR's own output bridges them by interpolation), so the fused output is
-// vision's there and takes the LiDAR back without a jump. Before: the gap's
-// frames were extrapolated backwards from the next sweep and entered as
-// measurements (fused 29 cm, LiDAR 18.7 cm, vision 1.8 cm).
+// vision's there and takes the LiDAR back without a jump. Guards against
+// entering the gap's frames as measurements extrapolated backwards from the
+// next sweep, which put fused far behind vision here
+// (docs/history/2026-11-27-online-estimator.md, "LiDAR drop-out").
 TEST(SystemEndToEnd, ALidarDropOutIsBridgedByVision) {
   sim::SimOptions options = roomOptions();
   options.duration = 11.0;
@@ -181,7 +183,7 @@ TEST(SystemEndToEnd, ALidarDropOutIsBridgedByVision) {
   printFigures("fused, LiDAR drop-out", fused.result);
   printFigures("visual, LiDAR drop-out", visual.result);
   EXPECT_EQ(fused.result.output.trajectory.size(), fused.result.summary.images);
-  // The issue's bound: across a drop-out fused stays within 10 % of vision alone.
+  // The bound: across a drop-out fused stays within 10 % of vision alone.
   EXPECT_LT(fused.result.accuracy->ate.stats.rmse, 1.1 * visual.result.accuracy->ate.stats.rmse);
   const std::vector<double> errors = stepErrors(fused.result.output.trajectory, fused.ground_truth);
   EXPECT_LT(*std::max_element(errors.begin(), errors.end()), 0.02);
@@ -258,7 +260,7 @@ TEST(SystemEndToEnd, BlackoutSwitchesToLidarAndBackDeterministically) {
   }
   EXPECT_LT(worst, 0.02);
   EXPECT_LE(worst_lidar_sourced, lidar_worst);
-  // Measured 0.74 cm rmse online with the estimator (LiDAR alone 1.0 cm on these frames).
+  // Fused must beat the LiDAR alone, which errs about 1 cm on these frames.
   EXPECT_LT(r.accuracy->ate.stats.rmse, 0.01);
 
   // Deterministic twice: the same files byte for byte.

@@ -47,9 +47,10 @@ class ExtrinsicCheck {
   static constexpr int kBlocksPerWindow = 4;
   static constexpr int kMinWindows = 4;  // fewer say nothing about their scatter
   // The test looks at the last 30 s only: the scenes' own offset between
-  // LiDAR line features and image edges (1-7 deg, docs/benchmarks.md) does
-  // not shrink with the run's length, the standard error of a growing
-  // window would, until a correct calibration failed the test.
+  // LiDAR line features and image edges (degrees; docs/benchmarks.md, "The
+  // extrinsic check") does not shrink with the run's length, the standard
+  // error of a growing window would, until a correct calibration failed the
+  // test.
   static constexpr int kMaxWindows = 15;
   // A misalignment below this is within what a careful calibration achieves
   // and well inside the fusion's 3 deg association gate: no warning.
@@ -103,8 +104,9 @@ double studentT999(int dof);
 
 // The warning line a misaligned verdict would give (not printed yet: the
 // simulated scenes' own offsets are as large as the errors to be found,
-// docs/benchmarks.md). Names where the extrinsic was read (`where`, e.g.
-// "seq/sequence.yaml: key 'extrinsics.T_camera_lidar'") and the estimate.
+// docs/benchmarks.md, "The extrinsic check"). Names where the extrinsic was
+// read (`where`, e.g. "seq/sequence.yaml: key 'extrinsics.T_camera_lidar'")
+// and the estimate.
 std::string extrinsicWarning(const ExtrinsicVerdict& verdict, const std::string& where);
 
 }  // namespace lvslam::fusion

@@ -10,9 +10,10 @@ namespace lvslam::fusion {
 
 struct FusionConfig {
   double arc_step_deg = 0.2;              // delta_phi: arc sampling step on the sphere
-  // Tuned on simulated room and hall frames (docs/benchmarks.md): the LiDAR
-  // subsystem's features are voxel-thinned (0.3-0.5 m), so even five
-  // accumulated scans leave a few degrees between neighbours on the sphere.
+  // Chosen on simulated room and hall frames (docs/benchmarks.md, "Fusion
+  // framework"): the LiDAR subsystem's features are voxel-thinned (0.3-0.5 m),
+  // so even five accumulated scans leave a few degrees between neighbours on
+  // the sphere.
   double max_neighbour_angle_deg = 3.0;   // a sample's neighbour must be this close on the sphere
   double min_matched_ratio = 0.5;         // share of arc samples that must find a neighbour
   int min_neighbours = 8;                 // distinct LiDAR points behind one line

@@ -61,10 +61,11 @@ struct RegistrationConfig {
   std::size_t min_correspondences = 30;
   // Correspondences per feature, relative to the mean of the last good
   // registrations (1 before any); fewer: registered to the wrong place.
-  // Right registrations of the simulated room, hall and gate keep >= 0.63
-  // absolute (0.46-0.49 at the third scan of the 60 s gate, seeds 2 and 3,
-  // against a two-scan map that matched 0.70-0.73 of the second); a 1 m slip
-  // along the repetitive synthetic hall of tests/lidar keeps 0.44.
+  // Relative, because a young map matches less of a rightly registered scan
+  // than a grown one; 0.5 lies between what right registrations of the
+  // simulated scenes keep and what a slip along the repetitive synthetic hall
+  // of tests/lidar keeps (docs/history/2026-11-21-components.md, "Speed";
+  // docs/history/2026-11-fusion-sessions.md, "Fused mode over nine sequences").
   double min_inlier_ratio = 0.5;
   // Registrations lost in a row (with enough features) after which the local
   // map restarts from the scan at its predicted pose, so that a map the

@@ -45,9 +45,9 @@ std::vector<std::string> familyNames() {
 }
 
 SimOptions familyOptions(const std::string& name) {
-  // No lens distortion in the corridor: with it the visual subsystem lost
-  // four fifths of the motion along the axis (60 s: 13.9 m of 54.9 m), without
-  // it 20 s gave 14 cm ATE; the corridor is about the LiDAR (docs/simulator.md).
+  // No lens distortion in the corridor: with it the visual subsystem loses
+  // most of the motion along the axis, and the corridor is about the LiDAR's
+  // weakness, not the camera's (docs/simulator.md).
   if (name == "corridor") return realistic(name, "corridor");
   if (name == "hall16" || name == "blur") {
     SimOptions o = realistic(name, "hall");
@@ -58,7 +58,7 @@ SimOptions familyOptions(const std::string& name) {
     }
     if (name == "blur") {  // a dim hall: the shutter stays open 37.5 ms
       o.exposure_scale = 2.5;
-      o.blur_samples = 4;  // 5 would take 126 s of the 2 cores for 60 s (21 CPU s per 5 s measured)
+      o.blur_samples = 4;  // 5 would overrun the generation time budget (docs/simulator.md)
       o.rolling_shutter = true;
       o.auto_exposure = false;  // the exposure is fixed (long)
     }

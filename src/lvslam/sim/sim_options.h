@@ -15,7 +15,8 @@ struct TimeInterval {
   double begin = 0.0, end = 0.0;  // seconds from the sequence start
 };
 
-// Every option's default keeps the scenes of before byte for byte.
+// Every option's default leaves a scene byte for byte as it is without the
+// option, so sequences and figures made without it stay reproducible.
 struct SimOptions {
   std::string scenario = "room";  // room | hall | gate | corridor | yard | office | atrium
   std::string family;             // the family preset these options came from (families.h); names the sequence

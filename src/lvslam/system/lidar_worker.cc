@@ -72,8 +72,8 @@ FusionAnswer LidarWorker::addFrame(double t, const std::vector<fusion::ImageSegm
 
 // Every window's verdict goes to stats.json (extrinsic_check). No warning
 // line yet: on correct calibrations the simulated scenes' own offsets
-// between LiDAR line features and image edges reach 5 deg (glass), as large
-// as the errors to be found, and the test called one misaligned
+// between LiDAR line features and image edges are as large as the errors to
+// be found, so the test would warn about a correct calibration
 // (docs/benchmarks.md, "The extrinsic check").
 void LidarWorker::checkExtrinsic(double t, const std::vector<fusion::ImageSegment>& segments) {
   recordExtrinsicVerdict(extrinsic_check_->addFrame(

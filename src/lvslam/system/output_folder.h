@@ -3,8 +3,8 @@
 // cannot be made or written is named now, not after the whole run (whose
 // results would then be lost), and a reused folder must not show an earlier
 // run's files as this run's (a subsystems/visual_map_3.tum of a run with
-// three maps stayed beside a later run's two; a run without result left the
-// old trajectory.tum).
+// three maps would stay beside a later run's two; a run without result would
+// leave the old trajectory.tum).
 #include <string>
 
 namespace lvslam::system {

@@ -26,10 +26,9 @@ RunMode parseRunMode(const std::string& name, const std::string& where);
 // Where keyframe keypoints take their LiDAR depth from (with a LiDAR and
 // visual.keypoint_depths on): the raw points of the latest sweeps, deskewed
 // to the image time with the camera's motion, or the fusion framework's
-// accumulated LiDAR features (fused mode only). Scans by default: over the
-// 60 s room, hall and gate with seeds 1-3, fused ATE mean 5.3 cm against
-// 7.5 cm with features (docs/history/2026-11-fusion-sessions.md, "Fused mode
-// over nine sequences").
+// accumulated LiDAR features (fused mode only). Scans by default: they give
+// the lower fused error over several scenes and seeds
+// (docs/history/2026-11-fusion-sessions.md, "Fused mode over nine sequences").
 enum class KeypointDepthSource { kScans, kFeatures };
 
 struct SystemConfig {
@@ -49,7 +48,8 @@ struct SystemConfig {
   // LiDAR points this close in time to an image give its depth hints.
   double depth_hint_max_dt = 0.02;
   // A keyframe keypoint takes the LiDAR depth of features this close (pixels;
-  // the features are ~2000 per image, 3 px gave 13 depths per keyframe, 8 px 165).
+  // the features are sparse on the image, so a tight radius leaves a keyframe
+  // few depths: docs/history/2026-11-fusion-sessions.md, "The dual system").
   double keypoint_depth_radius_px = 8.0;
   // From scans: raw points this close in time to a keyframe,
   // deskewed with the camera's motion, give its keypoint depths (one sweep

@@ -29,9 +29,8 @@ std::optional<fusion::CameraMotion> motionFromPrevious(const std::vector<VisualF
 // Keyframe depths from raw points, deskewed to the image time, are good
 // enough to make points straight from them (ORB-SLAM2's RGB-D close points),
 // which keeps tracking alive through turns where two-view triangulation lacks
-// parallax (visual mode, 60 s hall: lost at 21.5 s and 1.74 m without, one
-// map and 4.7 cm with). The fusion framework's depths from accumulated
-// features are not (fused room 4.8 -> 7.6 cm): with those, they stay BA depth
+// parallax. The fusion framework's depths from accumulated features are not
+// (points made from them cost fused accuracy): with those, they stay BA depth
 // terms (docs/history/2026-11-fusion-sessions.md, "Points from keyframe depths").
 visual::VisualSlamConfig visualSlamConfig(const SystemConfig& config, bool depths_from_scans) {
   visual::VisualSlamConfig c = config.visual;

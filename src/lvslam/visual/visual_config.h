@@ -32,9 +32,9 @@ struct VisualConfig {
   bool use_keypoint_depths = true;
   // The LiDAR odometry's pose of keyframes (VisualSlam::addLidarPose) enters
   // local BA as pose priors (local_window.ba.prior_*) and anchors the map
-  // correction below; off: ignored. Only fused mode gives such poses. On
-  // since the map correction: fused ATE mean 1.6 against 5.3 cm over nine
-  // sequences (docs/history/2026-11-fusion-sessions.md, "LiDAR-anchored map").
+  // correction below; off: ignored. Only fused mode gives such poses. On: with
+  // the map correction they lower the fused error
+  // (docs/history/2026-11-fusion-sessions.md, "LiDAR-anchored map").
   bool use_lidar_pose_priors = true;
   // With the priors: the whole map is pulled onto the LiDAR poses every few
   // keyframes (pose graph; its prior sigmas are local BA's).

@@ -3,8 +3,8 @@
 // segment's support region is cut into bands parallel to it; each band is
 // described by the mean and spread of its rows' gradient sums along and
 // across the line; bits compare bands pairwise. Written for speed: one
-// gradient image per frame and nearest-pixel samples (OpenCV's LBD took 25 %
-// of the visual front end's time).
+// gradient image per frame and nearest-pixel samples (OpenCV's LBD was a
+// large share of the visual front end's time; docs/architecture.md).
 #include <array>
 #include <cstdint>
 

@@ -197,7 +197,8 @@ class LocalBundleAdjustment {
   }
 
  private:
-  // Ceres' defaults for its trust region, kept when it left this path.
+  // Ceres' defaults for its trust region: the damping local BA had under
+  // Ceres (docs/history/2026-11-fusion-sessions.md, "Local BA without Ceres").
   static constexpr double kInitialRadius = 1e4, kMaxRadius = 1e16, kMinRadius = 1e-32;
   static constexpr double kMinRelativeDecrease = 1e-3, kFunctionTolerance = 1e-6;
   static constexpr double kParameterTolerance = 1e-8, kGradientTolerance = 1e-10;

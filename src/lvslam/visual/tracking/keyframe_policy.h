@@ -13,9 +13,8 @@ struct KeyframePolicy {
   double tracked_ratio = 0.9;
   int min_tracked = 100;
   // Such a frame is a keyframe once min_interval frames have passed since the
-  // last one; any frame is after max_interval. Max 5: 8 or 10 cost accuracy
-  // on the 8 s system test run (docs/history/2026-11-21-components.md,
-  // "Visual speed").
+  // last one; any frame is after max_interval. Max 5: longer intervals cost
+  // accuracy (docs/history/2026-11-21-components.md, "Visual speed").
   int min_interval = 3;
   int max_interval = 5;
   // Fewer point inliers than this: never a keyframe (ORB-SLAM asks for more than 15).
