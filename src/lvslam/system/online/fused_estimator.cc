@@ -105,8 +105,7 @@ std::optional<FusedEstimator::Candidate> FusedEstimator::visualFactor(int node, 
   if (visual.T_new_old && last != last_visual_.end()) last->second.T_new_old = *visual.T_new_old * last->second.T_new_old;
   if (!use) return std::nullopt;
   const double t = times_[static_cast<std::size_t>(node)];
-  const double s = config_.visual_pixel_sigma;
-  const Matrix6d information = visual.information / (s * s);
+  const Matrix6d& information = visual.information;
   const PseudoInverse seen = pseudoInverse(information);
   if (seen.rank == 0) return std::nullopt;
   int map_node = -1;
@@ -218,8 +217,8 @@ FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInp
     const double s = config_.visual_pixel_sigma;
     const std::optional<GateEvent> jump =
         visual_gate_.check(t, visual->T_map_camera, visual->information / (s * s), !lidar.has_value());
-    VisualFrameInput weighed = *visual;
-    weighed.information /= visual_gate_.noiseScale();
+    VisualFrameInput weighed = *visual;  // at the estimator's pixel sigma, times the gate's noise scale
+    weighed.information = visual->information / visual_gate_.noiseScale() / (s * s);
     if (jump) out.gated.push_back(*jump);
     visual_candidate = visualFactor(node, weighed, !jump, visual_gate_.restarted());
   }

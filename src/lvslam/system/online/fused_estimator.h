@@ -109,7 +109,8 @@ class FusedEstimator {
   int addNode(double t, const Eigen::Isometry3d& T, bool fixed);
   void accept(const PoseFactor& factor);
   std::optional<Candidate> lidarFactor(int node, const LidarFrameInput& lidar, bool new_start);
-  // Keeps the map's corrections; the factor only when `use`.
+  // Keeps the map's corrections; the factor only when `use`. The
+  // information is already weighed (pixel sigma, the gate's noise scale).
   std::optional<Candidate> visualFactor(int node, const VisualFrameInput& visual, bool use, bool new_start);
   Candidate motionFactor(int node, double t) const;
   Candidate makeCandidate(PoseFactor factor) const;

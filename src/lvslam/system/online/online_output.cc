@@ -108,7 +108,7 @@ class FusedOnline final : public OnlineOutput {
     const OutputSource admitted = detection_.update(healthOf(*v));
     FrameOutput frame = frameAt(v->t, OutputSource::kLidar, detection_.lastProblem());
     std::optional<VisualFrameInput> visual;
-    if (admitted == OutputSource::kVisual) visual = final_poses_ ? finalVisualInput(*v) : visualInput(v->result);
+    if (admitted == OutputSource::kVisual) visual = visualInput(*v, final_poses_);
     const FusedFrameOutput out = estimator_.add(v->t, lidarInput(*l), visual);
     camera_nodes_.push_back(out.camera_node);
     if (v->result.T_world_odom) placements_[v->result.map_id] = v->result.T_world_odom->inverse();
@@ -140,25 +140,19 @@ class FusedOnline final : public OnlineOutput {
                            lidarToCameraInformation(l.information, T_camera_lidar_)};
   }
 
-  static std::optional<VisualFrameInput> visualInput(const visual::VisualFrameResult& r) {
+  // The frame's visual pose in its map; with `final_poses` (the offline
+  // replay) placed on the map's final keyframes where known, all in the
+  // final map's frame: no corrections.
+  static std::optional<VisualFrameInput> visualInput(const VisualFrameRecord& v, bool final_poses) {
+    const visual::VisualFrameResult& r = v.result;
     if (!r.pose_valid || !r.pose_information) return std::nullopt;
+    const bool placed = final_poses && v.T_world_camera_final;
     VisualFrameInput in;
     in.map_id = r.map_id;
-    in.T_map_camera = r.T_world_camera;
+    in.T_map_camera = visualPoseOf(v, placed);
     in.information = *r.pose_information;
-    in.T_new_old = r.T_new_old;
-    if (r.initial_reference) in.initial_view = *r.initial_reference;
-    return in;
-  }
-
-  // The same with every pose placed on the map's final keyframes
-  // (final_visual_poses.h), all in the final map's frame: no corrections.
-  static std::optional<VisualFrameInput> finalVisualInput(const VisualFrameRecord& v) {
-    std::optional<VisualFrameInput> in = visualInput(v.result);
-    if (!in || !v.T_world_camera_final) return in;
-    in->T_map_camera = *v.T_world_camera_final;
-    in->T_new_old.reset();
-    if (in->initial_view && v.initial_reference_final) in->initial_view->T_world_frame = *v.initial_reference_final;
+    if (!placed) in.T_new_old = r.T_new_old;
+    if (r.initial_reference) in.initial_view = initialReferenceOf(v, placed);
     return in;
   }
 
