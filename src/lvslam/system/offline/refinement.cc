@@ -6,13 +6,15 @@ namespace lvslam::system {
 
 namespace {
 
-// The estimator again, over the whole run: each visual pose placed on its
-// map's final keyframes, each LiDAR pose interpolated between the sweeps
-// around it; then its graph smoothed with every node free but the first
-// (the world).
+// The estimator again, over the whole run, each LiDAR pose interpolated
+// between the sweeps around it; then its graph smoothed with every node
+// free but the first (the world). Vision enters as tracked: its poses
+// placed on the map's final keyframes gain nothing here (the estimator
+// already weighs the map's drift) and lose where the final map is worse
+// than the tracking was (docs/benchmarks.md, "Offline refinement").
 Trajectory smoothFusedGraph(const PipelineRecords& records, const SystemConfig& config,
                             const Eigen::Isometry3d& T_camera_lidar) {
-  const std::unique_ptr<OnlineOutput> replay = makeOnlineOutput(config, T_camera_lidar, true);
+  const std::unique_ptr<OnlineOutput> replay = makeOnlineOutput(config, T_camera_lidar);
   for (std::size_t j = 0; j < records.visual.size() && j < records.lidar.size(); ++j)
     replay->add(&records.visual[j], &records.lidar[j]);
   const FusedEstimator& estimator = *replay->estimator();

@@ -1,7 +1,9 @@
 #pragma once
 // Offline refinement: what needs the whole run, written apart from the
 // online output (trajectory_refined.tum). Fused mode: the online
-// estimator's graph smoothed over the whole run (every frame free, every
+// estimator run again on the records as they stand after the run (each
+// LiDAR pose interpolated between the sweeps around it, vision as
+// tracked), its graph smoothed over the whole run (every frame free, every
 // accepted factor, the first pose held). Visual mode and the paper's output:
 // the same per-frame output fed with each visual pose placed on its
 // keyframe as the keyframe stands at the end (final_visual_poses.h, as

@@ -100,15 +100,14 @@ class PaperOnline final : public OnlineOutput {
 // by its registration; the estimator weighs what is admitted.
 class FusedOnline final : public OnlineOutput {
  public:
-  FusedOnline(const SystemConfig& config, const Eigen::Isometry3d& T_camera_lidar, bool final_poses)
-      : estimator_(config.estimator), detection_(config.detection), T_camera_lidar_(T_camera_lidar),
-        final_poses_(final_poses) {}
+  FusedOnline(const SystemConfig& config, const Eigen::Isometry3d& T_camera_lidar)
+      : estimator_(config.estimator), detection_(config.detection), T_camera_lidar_(T_camera_lidar) {}
 
   FrameOutput add(const VisualFrameRecord* v, const LidarFrameRecord* l) override {
     const OutputSource admitted = detection_.update(healthOf(*v));
     FrameOutput frame = frameAt(v->t, OutputSource::kLidar, detection_.lastProblem());
     std::optional<VisualFrameInput> visual;
-    if (admitted == OutputSource::kVisual) visual = visualInput(*v, final_poses_);
+    if (admitted == OutputSource::kVisual) visual = visualInput(*v);
     const FusedFrameOutput out = estimator_.add(v->t, lidarInput(*l), visual);
     camera_nodes_.push_back(out.camera_node);
     if (v->result.T_world_odom) placements_[v->result.map_id] = v->result.T_world_odom->inverse();
@@ -140,26 +139,23 @@ class FusedOnline final : public OnlineOutput {
                            lidarToCameraInformation(l.information, T_camera_lidar_)};
   }
 
-  // The frame's visual pose in its map; with `final_poses` (the offline
-  // replay) placed on the map's final keyframes where known, all in the
-  // final map's frame: no corrections.
-  static std::optional<VisualFrameInput> visualInput(const VisualFrameRecord& v, bool final_poses) {
+  // The frame's visual pose in its map as tracked, with the map's
+  // corrections since the last frame.
+  static std::optional<VisualFrameInput> visualInput(const VisualFrameRecord& v) {
     const visual::VisualFrameResult& r = v.result;
     if (!r.pose_valid || !r.pose_information) return std::nullopt;
-    const bool placed = final_poses && v.T_world_camera_final;
     VisualFrameInput in;
     in.map_id = r.map_id;
-    in.T_map_camera = visualPoseOf(v, placed);
+    in.T_map_camera = visualPoseOf(v, false);
     in.information = *r.pose_information;
-    if (!placed) in.T_new_old = r.T_new_old;
-    if (r.initial_reference) in.initial_view = initialReferenceOf(v, placed);
+    in.T_new_old = r.T_new_old;
+    if (r.initial_reference) in.initial_view = initialReferenceOf(v, false);
     return in;
   }
 
   FusedEstimator estimator_;
   DetectionModule detection_;
   Eigen::Isometry3d T_camera_lidar_;
-  bool final_poses_;
   std::map<int, Eigen::Isometry3d> placements_;
   std::vector<int> camera_nodes_;  // per frame, the estimator's node (-1: none)
 };
@@ -188,7 +184,7 @@ std::unique_ptr<OnlineOutput> makeOnlineOutput(const SystemConfig& config, const
     case RunMode::kFused: break;
   }
   if (config.paper_output) return std::make_unique<PaperOnline>(config, T_camera_lidar.inverse(), final_visual_poses);
-  return std::make_unique<FusedOnline>(config, T_camera_lidar, final_visual_poses);
+  return std::make_unique<FusedOnline>(config, T_camera_lidar);
 }
 
 }  // namespace lvslam::system
