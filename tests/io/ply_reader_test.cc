@@ -43,6 +43,24 @@ TEST(PlyReader, ATruncatedMapIsNamed) {
   EXPECT_NE(message.find("map.ply: truncated"), std::string::npos) << message;
 }
 
+// Found by fuzz_ply: a count no file of this size can hold is refused
+// before anything that large is allocated.
+TEST(PlyReader, ACountTheFileCannotHoldIsRefused) {
+  TempDir dir;
+  dir.write("lines.ply",
+            "ply\nformat ascii 1.0\nelement vertex 8888888888884\nproperty float x\nproperty float y\n"
+            "property float z\nelement edge 1\nproperty int vertex1\nproperty int vertex2\nproperty uchar red\n"
+            "property uchar green\nproperty uchar blue\nend_header\n0 0 0\n0 0 0 0 0\n");
+  const std::string message = testing::errorMessageOf([&] { readLineSegmentsPly(dir.file("lines.ply")); });
+  EXPECT_NE(message.find("lines.ply: truncated: the header announces 8888888888884 vertex elements"), std::string::npos)
+      << message;
+  dir.write("map.ply",
+            "ply\nformat binary_little_endian 1.0\nelement vertex 4611686018427387904\nproperty float x\n"
+            "property float y\nproperty float z\nproperty float intensity\nend_header\n");
+  EXPECT_NE(testing::errorMessageOf([&] { readPointCloudPly(dir.file("map.ply")); }).find("map.ply: truncated"),
+            std::string::npos);
+}
+
 TEST(PlyReader, OtherLayoutsAreRefused) {
   TempDir dir;
   dir.write("other.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n1\n");

@@ -55,6 +55,23 @@ PlyHeader readHeader(std::istream& in, const std::string& path) {
   throw Error(path, "PLY header has no end_header (truncated?)");
 }
 
+// Bytes between the stream's position and the end of the file.
+std::size_t bytesLeft(std::istream& in) {
+  const std::streampos here = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streampos end = in.tellg();
+  in.seekg(here);
+  return here >= 0 && end >= here ? static_cast<std::size_t>(end - here) : 0;
+}
+
+// A count the rest of the file cannot hold, at `min_bytes` per item, is a
+// damaged header: an error before anything that large is allocated.
+void checkCount(const std::string& path, const PlyHeader::Element& e, std::size_t min_bytes, std::size_t bytes_left) {
+  if (e.count > bytes_left / min_bytes)
+    throw Error(path, fmt::format("truncated: the header announces {} {} elements, the {} bytes after it hold at most {}",
+                                  e.count, e.name, bytes_left, bytes_left / min_bytes));
+}
+
 }  // namespace
 
 std::vector<PlyPoint> readPointCloudPly(const std::string& path) {
@@ -66,6 +83,7 @@ std::vector<PlyPoint> readPointCloudPly(const std::string& path) {
   if (header.format != "binary_little_endian" || !vertex || vertex->properties != expected ||
       std::any_of(vertex->types.begin(), vertex->types.end(), [](const std::string& t) { return t != "float"; }))
     throw Error(path, "expected a binary little-endian PLY of float x, y, z, intensity (as lvslam writes map.ply)");
+  checkCount(path, *vertex, 4 * sizeof(float), bytesLeft(in));
   std::vector<float> values(4 * vertex->count);
   in.read(reinterpret_cast<char*>(values.data()), static_cast<std::streamsize>(values.size() * sizeof(float)));
   if (static_cast<std::size_t>(in.gcount()) != values.size() * sizeof(float))
@@ -86,6 +104,10 @@ std::vector<PlySegment> readLineSegmentsPly(const std::string& path) {
   const PlyHeader::Element* edge = header.element("edge");
   if (header.format != "ascii" || !vertex || !edge || vertex->properties.size() != 3 || edge->properties.size() != 5)
     throw Error(path, "expected an ASCII PLY of vertices and coloured edges (as lvslam writes lines.ply)");
+  // ASCII: at least a digit and a separator per number.
+  const std::size_t bytes_left = bytesLeft(in);
+  checkCount(path, *vertex, 2 * 3, bytes_left);
+  checkCount(path, *edge, 2 * 5, bytes_left);
   std::vector<Eigen::Vector3d> vertices(vertex->count);
   for (Eigen::Vector3d& v : vertices)
     if (!(in >> v.x() >> v.y() >> v.z())) throw Error(path, "truncated or malformed vertex list");
