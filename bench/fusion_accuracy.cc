@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
         }
     if (per_frame)
       for (const auto& f : run.frames) {
-        const auto s = fusion::summarize(f.edgeMatches());
+        const auto s = eval::summarize(f.edgeMatches());
         fmt::print("t {:7.3f}  segments {:3}  lines {:3}  on edges {:3}  median endpoint {:.4f} m  median direction {:.3f} deg\n",
                    f.t, f.segments, f.output.result.lines.size(), s.lines, s.median_endpoint_distance,
                    s.median_direction_error_deg);
