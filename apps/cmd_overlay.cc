@@ -16,8 +16,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "command.h"
+#include "overlay_image.h"
 #include "lvslam/core/error.h"
-#include "lvslam/fusion/debug_image.h"
 #include "lvslam/fusion/fusion_step.h"
 #include "lvslam/fusion/lidar_bridge.h"
 #include "lvslam/io/sequence_reader.h"
@@ -81,8 +81,8 @@ class OverlayRun {
     stats_.segments += segments.size();
     stats_.refined += out.lidar_points_changed;
     if (stats_.frames++ % static_cast<std::size_t>(args_.every) != 0) return;
-    cv::Mat canvas = fusion::drawFusionDebugImage(frame.image, camera_, step_.framework().featuresInCamera(out.T_world_lidar),
-                                                  segments, out.result.lines);
+    cv::Mat canvas = drawOverlayImage(frame.image, camera_, step_.framework().featuresInCamera(out.T_world_lidar),
+                                      segments, out.result.lines);
     const std::string caption = fmt::format("t {:.3f}  LiDAR {} (green planar, red linear, blue other)  LSD {}  fusion {}",
                                             frame.timestamp, out.result.lidar_features, segments.size(),
                                             out.result.lines.size());

@@ -17,7 +17,7 @@
 #include "fusion/sim_fusion_harness.h"
 #include "lvslam/core/error.h"
 #include "lvslam/core/yaml_config.h"
-#include "lvslam/fusion/debug_image.h"
+#include "overlay_image.h"
 
 int main(int argc, char** argv) {
   using namespace lvslam;
@@ -35,15 +35,15 @@ int main(int argc, char** argv) {
   app.add_option("--config", config_path, "YAML with lidar: and fusion: sections (config/sim.yaml)");
   app.add_flag("--per-frame", per_frame, "print one line per measured frame");
   app.add_flag("--per-line", per_line, "print every fusion line with its truth");
-  app.add_option("--debug-dir", debug_dir, "write each measured frame's fusion debug image here");
+  app.add_option("--debug-dir", debug_dir, "write each measured frame's overlay image (as lvslam overlay draws it) here");
   CLI11_PARSE(app, argc, argv);
   if (!debug_dir.empty())
     options.on_frame = [&](const fusion::testing::SimFusionFrame& f, const cv::Mat& image, const fusion::FusionStep& step) {
       std::vector<fusion::ImageSegment> none;
       const auto& fw = step.framework();
       cv::imwrite(fmt::format("{}/frame_{:07.3f}.png", debug_dir, f.t),
-                  fusion::drawFusionDebugImage(image, fw.camera(), fw.featuresInCamera(f.output.T_world_lidar), none,
-                                               f.output.result.lines));
+                  apps::drawOverlayImage(image, fw.camera(), fw.featuresInCamera(f.output.T_world_lidar), none,
+                                         f.output.result.lines));
     };
   try {
     if (!extrinsic_error.empty()) options.extrinsic_error = sim::parseExtrinsicError(extrinsic_error);
@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
         }
     if (per_frame)
       for (const auto& f : run.frames) {
-        const auto s = fusion::summarize(f.edgeMatches());
+        const auto s = eval::summarize(f.edgeMatches());
         fmt::print("t {:7.3f}  segments {:3}  lines {:3}  on edges {:3}  median endpoint {:.4f} m  median direction {:.3f} deg\n",
                    f.t, f.segments, f.output.result.lines.size(), s.lines, s.median_endpoint_distance,
                    s.median_direction_error_deg);

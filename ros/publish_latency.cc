@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "lvslam/fusion/line_accuracy.h"  // quantile, as the run summary computes its latency figures
+#include "lvslam/eval/line_accuracy.h"  // quantile, as the run summary computes its latency figures
 
 namespace lvslam::ros_node {
 
@@ -31,11 +31,11 @@ LatencySummary PublishLatency::summary() const {
   std::lock_guard lock(mutex_);
   LatencySummary s;
   s.frames = arrival_ms_.size();
-  s.arrival_median_ms = fusion::quantile(arrival_ms_, 0.5);
-  s.arrival_p95_ms = fusion::quantile(arrival_ms_, 0.95);
+  s.arrival_median_ms = eval::quantile(arrival_ms_, 0.5);
+  s.arrival_p95_ms = eval::quantile(arrival_ms_, 0.95);
   s.stamp_frames = stamp_ms_.size();
-  s.stamp_median_ms = fusion::quantile(stamp_ms_, 0.5);
-  s.stamp_p95_ms = fusion::quantile(stamp_ms_, 0.95);
+  s.stamp_median_ms = eval::quantile(stamp_ms_, 0.5);
+  s.stamp_p95_ms = eval::quantile(stamp_ms_, 0.95);
   return s;
 }
 

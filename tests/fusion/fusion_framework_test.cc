@@ -3,10 +3,8 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
-#include <opencv2/core.hpp>
 
 #include "lvslam/core/se3.h"
-#include "lvslam/fusion/debug_image.h"
 #include "fusion/test_rig.h"
 
 namespace lvslam::fusion {
@@ -99,19 +97,6 @@ TEST(FusionFramework, PointDepthsComeFromTheNearestSurface) {
   EXPECT_NEAR(depths[0], on_wall.z(), 0.05 * on_wall.z());
   EXPECT_NEAR(depths[1], on_pole.z(), 0.05);  // the pole, not the wall behind it
   EXPECT_TRUE(std::isnan(depths[2]));         // top-left corner: sky, nothing there
-}
-
-TEST(FusionFramework, DebugImageDrawsFeaturesAndLines) {
-  const Scene scene;
-  FusionFramework fusion(testCamera(), cameraFromLidar(), FusionConfig{});
-  fusion.addLidarScan(measure(scene.pole, scene.pole_dirs, FeatureShape::kLinear, 0.0, 0), motionOfScan(0.0));
-  const cv::Mat gray(480, 640, CV_8UC1, cv::Scalar(0));
-  const cv::Mat img = drawFusionDebugImage(gray, testCamera(), fusion.featuresInCamera(lidarPose(0.05)), {}, {});
-  ASSERT_EQ(img.type(), CV_8UC3);
-  cv::Mat channels[3];
-  cv::split(img, channels);
-  EXPECT_GT(cv::countNonZero(channels[2]), 50);  // linear points are red
-  EXPECT_EQ(cv::countNonZero(channels[1]), 0);   // no planar points given
 }
 
 }  // namespace

@@ -15,8 +15,8 @@ struct EdgeKinds {
 EdgeKinds kindsOfMatchedEdges(const SimFusionRun& run) {
   EdgeKinds kinds;
   for (const auto& f : run.frames)
-    for (const LineMatch& m : f.edgeMatches()) {
-      const TrueSegment& e = run.edges[m.segment];
+    for (const eval::LineMatch& m : f.edgeMatches()) {
+      const eval::TrueSegment& e = run.edges[m.segment];
       const Eigen::Vector3d d = (e.b - e.a).normalized();
       if (std::abs(d.z()) > 0.95) ++kinds.vertical;
       if (std::abs(d.z()) < 0.05 && std::max(e.a.z(), e.b.z()) < 0.3) ++kinds.low_horizontal;
@@ -35,7 +35,7 @@ SimFusionOptions roomFrames() {
 TEST(FusionOnSimulatedFrames, WholeFrameYieldsFusionLinesOnTrueDoorFramesAndWallEdgesWithinBounds) {
   const SimFusionRun run = runSimulatedFusion(roomFrames());
   ASSERT_GE(run.frames.size(), 6u);
-  const AccuracySummary edges = run.edgeSummary();
+  const eval::AccuracySummary edges = run.edgeSummary();
   std::cout << "room: " << run.linesPerFrame() << " fusion lines/frame, " << run.edgeLinesPerFrame()
             << " on true edges; endpoint median " << edges.median_endpoint_distance << " m, direction median "
             << edges.median_direction_error_deg << " deg; surface median " << run.surfaceDistanceQuantile(0.5)
@@ -60,7 +60,7 @@ TEST(FusionOnSimulatedFrames, DISABLED_ExtrinsicErrorOfOneDegreeAndThreeCentimet
   SimFusionOptions options = roomFrames();
   options.extrinsic_error = sim::ExtrinsicError{1.0, 0.03};
   const SimFusionRun run = runSimulatedFusion(options);
-  const AccuracySummary edges = run.edgeSummary();
+  const eval::AccuracySummary edges = run.edgeSummary();
   std::cout << "room, extrinsic error 1 deg / 3 cm: " << run.edgeLinesPerFrame()
             << " lines/frame on true edges; endpoint median " << edges.median_endpoint_distance
             << " m, direction median " << edges.median_direction_error_deg << " deg\n";

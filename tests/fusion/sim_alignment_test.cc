@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "lvslam/fusion/feature_accumulator.h"
-#include "lvslam/fusion/line_accuracy.h"
+#include "lvslam/eval/line_accuracy.h"
 #include "lvslam/sim/lidar_simulator.h"
 #include "lvslam/sim/scenario.h"
 
@@ -49,8 +49,8 @@ TEST(TemporalAlignmentOnSimulatedSweep, UndoesTheRobotMotionWithPerPointTimes) {
   naive.addScan(untimed, motion);
   const auto d_aligned = surfaceDistances(aligned.inCameraFrame(T_world_camera), T_world_camera, scenario.world);
   const auto d_naive = surfaceDistances(naive.inCameraFrame(T_world_camera), T_world_camera, scenario.world);
-  const double aligned_median = quantile(d_aligned, 0.5), aligned_p90 = quantile(d_aligned, 0.9);
-  const double naive_median = quantile(d_naive, 0.5), naive_p90 = quantile(d_naive, 0.9);
+  const double aligned_median = eval::quantile(d_aligned, 0.5), aligned_p90 = eval::quantile(d_aligned, 0.9);
+  const double naive_median = eval::quantile(d_naive, 0.5), naive_p90 = eval::quantile(d_naive, 0.9);
   std::cout << "surface distance aligned median " << aligned_median << " p90 " << aligned_p90 << "; unaligned median "
             << naive_median << " p90 " << naive_p90 << " (" << d_aligned.size() << " points)\n";
   // Range noise is 1.5 cm along the ray: its median projection is below 1.5 cm.

@@ -17,20 +17,20 @@ visual::LineExtractorConfig SimFusionOptions::defaultLines() {
   return c;
 }
 
-std::vector<LineMatch> SimFusionFrame::edgeMatches() const {
-  std::vector<LineMatch> out;
+std::vector<eval::LineMatch> SimFusionFrame::edgeMatches() const {
+  std::vector<eval::LineMatch> out;
   for (const LineTruth& t : truth)
     if (t.edge) out.push_back(*t.edge);
   return out;
 }
 
-AccuracySummary SimFusionRun::edgeSummary() const {
-  std::vector<LineMatch> all;
+eval::AccuracySummary SimFusionRun::edgeSummary() const {
+  std::vector<eval::LineMatch> all;
   for (const auto& f : frames) {
     const auto m = f.edgeMatches();
     all.insert(all.end(), m.begin(), m.end());
   }
-  return summarize(all);
+  return eval::summarize(all);
 }
 
 double SimFusionRun::linesPerFrame() const {
@@ -49,7 +49,7 @@ double SimFusionRun::surfaceDistanceQuantile(double q) const {
   std::vector<double> d;
   for (const auto& f : frames)
     for (const LineTruth& t : f.truth) d.insert(d.end(), std::begin(t.surface_distance), std::end(t.surface_distance));
-  return quantile(d, q);
+  return eval::quantile(d, q);
 }
 
 namespace {
@@ -63,10 +63,10 @@ struct Segment2 {
 
 // The true edges in front of the camera, clipped to z >= 0.1 m and projected
 // with the true pose (the simulator's camera has no distortion by default).
-std::vector<Segment2> projectedEdges(const std::vector<TrueSegment>& edges, const Eigen::Isometry3d& T_camera_world,
+std::vector<Segment2> projectedEdges(const std::vector<eval::TrueSegment>& edges, const Eigen::Isometry3d& T_camera_world,
                                      const PinholeCamera& camera) {
   std::vector<Segment2> out;
-  for (const TrueSegment& e : edges) {
+  for (const eval::TrueSegment& e : edges) {
     Eigen::Vector3d a = T_camera_world * e.a, b = T_camera_world * e.b;
     constexpr double kNear = 0.1;
     if (a.z() < kNear && b.z() < kNear) continue;
@@ -92,7 +92,7 @@ bool runsAlong(const ImageSegment& s, const Segment2& e) {
 
 std::vector<LineTruth> measure(const FusionResult& result, const std::vector<ImageSegment>& segments,
                                const Eigen::Isometry3d& T_world_camera, const PinholeCamera& camera,
-                               const sim::World& world, const std::vector<TrueSegment>& edges) {
+                               const sim::World& world, const std::vector<eval::TrueSegment>& edges) {
   const std::vector<Segment2> projected = projectedEdges(edges, T_world_camera.inverse(), camera);
   std::vector<LineTruth> out;
   for (const FusionLine& line : result.lines) {
@@ -102,7 +102,7 @@ std::vector<LineTruth> measure(const FusionResult& result, const std::vector<Ima
     truth.surface_distance[1] = world.distanceToSurface(B);
     const ImageSegment& s = segments[line.segment_index];
     const bool on_edge = std::any_of(projected.begin(), projected.end(), [&](const Segment2& e) { return runsAlong(s, e); });
-    if (on_edge) truth.edge = matchToNearestSegment(A, B, edges);
+    if (on_edge) truth.edge = eval::matchToNearestSegment(A, B, edges);
     out.push_back(truth);
   }
   return out;

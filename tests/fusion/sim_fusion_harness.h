@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lvslam/fusion/fusion_step.h"
-#include "lvslam/fusion/line_accuracy.h"
+#include "lvslam/eval/line_accuracy.h"
 #include "lvslam/lidar/lidar_config.h"
 #include "lvslam/sim/sim_options.h"
 #include "lvslam/visual/feature/line_extractor.h"
@@ -42,7 +42,7 @@ struct SimFusionOptions {
 // borders printed on a plane): no edge to compare with, but like every line
 // they must lie on a true surface.
 struct LineTruth {
-  std::optional<LineMatch> edge;
+  std::optional<eval::LineMatch> edge;
   double surface_distance[2] = {0, 0};  // metres, A and B to the nearest true surface
 };
 
@@ -51,14 +51,14 @@ struct SimFusionFrame {
   std::size_t segments = 0;
   FusionFrameOutput output;
   std::vector<LineTruth> truth;  // one per fusion line, same order
-  std::vector<LineMatch> edgeMatches() const;
+  std::vector<eval::LineMatch> edgeMatches() const;
 };
 
 struct SimFusionRun {
   std::vector<SimFusionFrame> frames;
-  std::vector<TrueSegment> edges;  // the world's edges
+  std::vector<eval::TrueSegment> edges;  // the world's edges
   std::size_t lidar_points_changed = 0;
-  AccuracySummary edgeSummary() const;  // over the lines of edge segments
+  eval::AccuracySummary edgeSummary() const;  // over the lines of edge segments
   double linesPerFrame() const;
   double edgeLinesPerFrame() const;
   double surfaceDistanceQuantile(double q) const;  // over all lines' endpoints

@@ -11,7 +11,7 @@
 #include "lvslam/core/error.h"
 #include "lvslam/eval/eval_report.h"
 #include "lvslam/eval/json_writer.h"
-#include "lvslam/fusion/line_accuracy.h"
+#include "lvslam/eval/line_accuracy.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/system/frame_stats_stream.h"
 #include "lvslam/system/offline/loop_report.h"
@@ -180,8 +180,8 @@ void addOnlineFigures(const std::vector<FrameOutput>& frames, RunSummary& s) {
     latencies.push_back(f.latency_ms);
     for (const GateEvent& g : f.gated) (g.source == FactorSource::kLidar ? s.gated_lidar : s.gated_visual) += 1;
   }
-  s.latency_median_ms = fusion::quantile(latencies, 0.5);
-  s.latency_p95_ms = fusion::quantile(latencies, 0.95);
+  s.latency_median_ms = eval::quantile(latencies, 0.5);
+  s.latency_p95_ms = eval::quantile(latencies, 0.95);
   s.latency_max_ms = latencies.empty() ? 0.0 : *std::max_element(latencies.begin(), latencies.end());
   s.visual_consistency_first = meanConsistency(frames, 0, frames.size() / 3);
   s.visual_consistency_last = meanConsistency(frames, frames.size() - frames.size() / 3, frames.size());

@@ -3,8 +3,8 @@
 #include <optional>
 
 #include "lvslam/core/error.h"
-#include "lvslam/fusion/lidar_depth_hints.h"
 #include "lvslam/fusion/surface_depth.h"
+#include "lvslam/system/lidar_depth_hints.h"
 #include "lvslam/system/stopwatch.h"
 
 namespace lvslam::system {
@@ -18,12 +18,12 @@ const PinholeCamera& requireCamera(const Calibration& calibration) {
 
 // The camera's motion from the previous frame to this one, when both were
 // tracked in the same map: it deskews the LiDAR points of the depth hints.
-std::optional<fusion::CameraMotion> motionFromPrevious(const std::vector<VisualFrameRecord>& previous,
-                                                       const visual::VisualFrameResult& now) {
+std::optional<CameraMotion> motionFromPrevious(const std::vector<VisualFrameRecord>& previous,
+                                               const visual::VisualFrameResult& now) {
   if (previous.empty() || !now.pose_valid) return std::nullopt;
   const visual::VisualFrameResult& before = previous.back().result;
   if (!before.pose_valid || before.map_id != now.map_id) return std::nullopt;
-  return fusion::CameraMotion{before.timestamp, now.T_world_camera.inverse() * before.T_world_camera};
+  return CameraMotion{before.timestamp, now.T_world_camera.inverse() * before.T_world_camera};
 }
 
 // Keyframe depths from raw points, deskewed to the image time, are good
@@ -68,7 +68,7 @@ std::vector<Eigen::Vector2d> VisualWorker::track(visual::ExtractedImage image, d
   // times in a row, VisualSlamConfig; then it starts without metric depth).
   if (slam_.needsDepthHints() && has_lidar_) {
     const Stopwatch watch;
-    slam_.setDepthHints(fusion::lidarDepthHints(recent_scans_, image.timestamp, calibration_, hint_max_dt_));
+    slam_.setDepthHints(lidarDepthHints(recent_scans_, image.timestamp, calibration_, hint_max_dt_));
     record.hints_ms = watch.ms();
   }
   const Stopwatch watch;
@@ -80,11 +80,11 @@ std::vector<Eigen::Vector2d> VisualWorker::track(visual::ExtractedImage image, d
     // Without that motion only the points measured close to the image time
     // are safe.
     const Stopwatch depth_watch;
-    const std::optional<fusion::CameraMotion> motion = motionFromPrevious(frames_, record.result);
+    const std::optional<CameraMotion> motion = motionFromPrevious(frames_, record.result);
     const double max_dt = motion ? keypoint_depth_max_dt_ : hint_max_dt_;
     const PinholeCamera& camera = *calibration_.camera;
     const std::vector<double> depths =
-        fusion::surfaceDepths(fusion::lidarDepthHints(recent_scans_, record.t, calibration_, max_dt, motion),
+        fusion::surfaceDepths(lidarDepthHints(recent_scans_, record.t, calibration_, max_dt, motion),
                               slam_.keypointPixels(), keypoint_depth_radius_px_, camera.width(), camera.height());
     record.keypoint_depths = depthCount(depths);
     slam_.setKeypointDepths(depths);

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "lvslam/system/detection_module.h"
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/online/detection_module.h"
 #include "lvslam/system/online/fused_estimator.h"
 #include "lvslam/system/system_config.h"
 

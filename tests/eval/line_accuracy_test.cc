@@ -1,8 +1,8 @@
-#include "lvslam/fusion/line_accuracy.h"
+#include "lvslam/eval/line_accuracy.h"
 
 #include <gtest/gtest.h>
 
-namespace lvslam::fusion {
+namespace lvslam::eval {
 namespace {
 
 TEST(LineAccuracy, DistancesToSegmentAndLineAreExact) {
@@ -38,4 +38,4 @@ TEST(LineAccuracy, SummaryGivesMediansOverEndpoints) {
 }
 
 }  // namespace
-}  // namespace lvslam::fusion
+}  // namespace lvslam::eval

@@ -1,10 +1,10 @@
-#include "lvslam/fusion/line_accuracy.h"
+#include "lvslam/eval/line_accuracy.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace lvslam::fusion {
+namespace lvslam::eval {
 
 double distanceToSegment(const Eigen::Vector3d& p, const TrueSegment& s) {
   const Eigen::Vector3d ab = s.b - s.a;
@@ -65,4 +65,4 @@ AccuracySummary summarize(const std::vector<LineMatch>& matches) {
   return s;
 }
 
-}  // namespace lvslam::fusion
+}  // namespace lvslam::eval

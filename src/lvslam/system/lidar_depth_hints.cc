@@ -1,11 +1,11 @@
-#include "lvslam/fusion/lidar_depth_hints.h"
+#include "lvslam/system/lidar_depth_hints.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "lvslam/core/se3.h"
 
-namespace lvslam::fusion {
+namespace lvslam::system {
 
 namespace {
 
@@ -58,4 +58,4 @@ std::vector<visual::PixelDepth> lidarDepthHints(const std::vector<std::shared_pt
   return hints;
 }
 
-}  // namespace lvslam::fusion
+}  // namespace lvslam::system

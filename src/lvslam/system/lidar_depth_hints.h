@@ -16,7 +16,7 @@
 #include "lvslam/core/lidar_scan.h"
 #include "lvslam/visual/tracking/map_initialization.h"
 
-namespace lvslam::fusion {
+namespace lvslam::system {
 
 // The camera at another time, seen from the camera at the image time (e.g.
 // the previous tracked frame); constant velocity in between and beyond.
@@ -32,4 +32,4 @@ std::vector<visual::PixelDepth> lidarDepthHints(const std::vector<std::shared_pt
                                                 const std::optional<CameraMotion>& motion = std::nullopt,
                                                 double min_depth = 0.3);
 
-}  // namespace lvslam::fusion
+}  // namespace lvslam::system

@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace lvslam::fusion {
+namespace lvslam::eval {
 
 struct TrueSegment {
   Eigen::Vector3d a = Eigen::Vector3d::Zero();
@@ -44,4 +44,4 @@ AccuracySummary summarize(const std::vector<LineMatch>& matches);
 // The q-quantile (0..1) of the values (nearest rank); 0 when empty.
 double quantile(std::vector<double> values, double q);
 
-}  // namespace lvslam::fusion
+}  // namespace lvslam::eval
