@@ -1,4 +1,4 @@
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/visual_slam.h"
 
 #include <algorithm>
 #include <deque>
