@@ -65,7 +65,7 @@ class VisualSlam {
   // The earlier maps, index = map id (retiredMaps().size() == mapId()).
   const std::vector<VisualMap>& retiredMaps() const;
   // After-run refinement: the frame's pose in its map as the map stands now
-  // (result.observations optimised again from T_world_camera_initial); none
+  // (result.replay.observations optimised again from T_world_camera_initial); none
   // without observations, for an unknown map or with too few inliers.
   std::optional<Eigen::Isometry3d> relocateInFinalMap(const VisualFrameResult& result,
                                                       const Eigen::Isometry3d& T_world_camera_initial) const;

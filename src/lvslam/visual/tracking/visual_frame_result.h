@@ -13,6 +13,20 @@ namespace lvslam::visual {
 enum class TrackingState { kInitializing, kTracking, kLost };
 const char* trackingStateName(TrackingState state);
 
+// Replay data: what the after-run refinement needs to place the frame again
+// on the map as it stands at the end; the online output does not use it.
+struct VisualReplayData {
+  // The keyframe the frame was tracked against and the frame's pose relative
+  // to it then (T_keyframe_camera), to place the frame on the map's final
+  // keyframe poses (as ORB-SLAM's SaveTrajectoryTUM); -1 when none.
+  int reference_keyframe = -1;
+  Eigen::Isometry3d T_keyframe_camera = Eigen::Isometry3d::Identity();
+  // The inliers the tracked pose rests on, to optimise it again against the
+  // map's final landmarks (VisualSlam::relocateInFinalMap); empty when the
+  // pose did not come from tracking.
+  TrackedObservations observations;
+};
+
 struct VisualFrameResult {
   double timestamp = 0.0;
   TrackingState state = TrackingState::kInitializing;
@@ -43,15 +57,8 @@ struct VisualFrameResult {
   // When the landmarks this pose rests on were mapped (medianFirstSeen of
   // its inlier points); with a pose_information only.
   std::optional<double> anchor_time;
-  // The keyframe the frame was tracked against and the frame's pose relative
-  // to it then (T_keyframe_camera), to place the frame on the map's final
-  // keyframe poses (as ORB-SLAM's SaveTrajectoryTUM); -1 when none.
-  int reference_keyframe = -1;
-  Eigen::Isometry3d T_keyframe_camera = Eigen::Isometry3d::Identity();
-  // The inliers the tracked pose rests on, to optimise it again against the
-  // map's final landmarks (VisualSlam::relocateInFinalMap); empty when the
-  // pose did not come from tracking.
-  TrackedObservations observations;
+  // For the after-run refinement only (system/final_visual_poses.h).
+  VisualReplayData replay;
 };
 
 }  // namespace lvslam::visual
