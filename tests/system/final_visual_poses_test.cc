@@ -22,8 +22,8 @@ VisualFrameRecord trackedFrame(int map_id, int keyframe, const Eigen::Isometry3d
   VisualFrameRecord v;
   v.result.pose_valid = true;
   v.result.map_id = map_id;
-  v.result.reference_keyframe = keyframe;
-  v.result.T_keyframe_camera = T_keyframe_camera;
+  v.result.replay.reference_keyframe = keyframe;
+  v.result.replay.T_keyframe_camera = T_keyframe_camera;
   v.result.T_world_camera = T_world_camera_then;
   return v;
 }

@@ -14,7 +14,7 @@
 #include "lvslam/eval/evaluate.h"
 #include "lvslam/sim/camera_renderer.h"
 #include "lvslam/sim/scenario.h"
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/visual_slam.h"
 
 namespace lvslam::visual::testing {
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "lvslam/core/error.h"
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/visual_slam.h"
 #include "support/temp_dir.h"
 
 namespace lvslam::visual {

@@ -14,7 +14,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "lvslam/eval/evaluate.h"
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/visual_slam.h"
 #include "visual/rendered_room.h"
 
 namespace lvslam::visual {

@@ -11,7 +11,7 @@
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
 #include "lvslam/eval/evaluate.h"
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/visual_slam.h"
 #include "visual/rendered_room.h"
 
 namespace lvslam::visual {

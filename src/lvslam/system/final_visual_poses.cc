@@ -19,9 +19,9 @@ void placeOnFinalKeyframes(const std::vector<visual::VisualMap>& retired, const 
     if (!r.pose_valid) continue;
     const visual::VisualMap* map = mapWithId(retired, current, r.map_id);
     if (map == nullptr) continue;
-    if (r.reference_keyframe >= 0)
-      if (const auto T_keyframe_world = map->keyframePose(r.reference_keyframe))
-        frame.T_world_camera_final = T_keyframe_world->inverse() * r.T_keyframe_camera;
+    if (r.replay.reference_keyframe >= 0)
+      if (const auto T_keyframe_world = map->keyframePose(r.replay.reference_keyframe))
+        frame.T_world_camera_final = T_keyframe_world->inverse() * r.replay.T_keyframe_camera;
     if (r.initial_reference && r.initial_reference_keyframe >= 0)
       if (const auto T_first_world = map->keyframePose(r.initial_reference_keyframe))
         frame.initial_reference_final = T_first_world->inverse();

@@ -9,7 +9,7 @@
 
 #include "lvslam/system/frame_records.h"
 #include "lvslam/visual/data/visual_map.h"
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/visual_slam.h"
 
 namespace lvslam::system {
 

@@ -13,7 +13,7 @@
 
 #include "lvslam/fusion/fusion_framework.h"
 #include "lvslam/lidar/feature_point.h"
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/tracking/visual_frame_result.h"
 
 namespace lvslam::system {
 

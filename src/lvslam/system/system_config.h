@@ -14,7 +14,7 @@
 #include "lvslam/loop/loop_config.h"
 #include "lvslam/system/online/detection_module.h"
 #include "lvslam/system/online/fused_estimator.h"
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/tracking/visual_slam_config.h"
 
 namespace lvslam::system {
 

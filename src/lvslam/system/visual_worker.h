@@ -12,7 +12,7 @@
 #include "lvslam/fusion/fusion_framework.h"
 #include "lvslam/system/frame_records.h"
 #include "lvslam/system/system_config.h"
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/visual_slam.h"
 
 namespace lvslam::system {
 

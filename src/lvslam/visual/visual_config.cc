@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "lvslam/core/error.h"
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/tracking/visual_slam_config.h"
 
 namespace lvslam::visual {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The visual subsystem's algorithm settings in one plain struct, and the
 // keys of the `visual:` section of the configuration (config/advanced.yaml),
-// which also reach VisualSlamConfig's own (tracking/visual_slam.h).
+// which also reach VisualSlamConfig's own (tracking/visual_slam_config.h).
 #include <string>
 
 #include "lvslam/core/config_keys.h"

@@ -14,7 +14,7 @@ void OnlineStage::frameArrived(std::size_t index, std::chrono::steady_clock::tim
 void OnlineStage::visualReady(std::size_t index, const VisualFrameRecord& record) {
   const std::lock_guard lock(mutex_);
   VisualFrameRecord& kept = visual_[index] = record;
-  kept.result.observations = {};  // replay data: not for the online output
+  kept.result.replay.observations = {};  // replay data: not for the online output
   runReady();
 }
 

@@ -1,4 +1,4 @@
-#include "lvslam/visual/tracking/visual_slam.h"
+#include "lvslam/visual/visual_slam.h"
 
 #include <algorithm>
 #include <deque>
@@ -203,12 +203,12 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   if (current_has_pose && current.information) {
     result.pose_information = current.information;
     result.anchor_time = medianFirstSeen(map, current.point_landmark);
-    if (!result.keyframe) result.observations = trackedObservations(current);
+    if (!result.keyframe) result.replay.observations = trackedObservations(current);
   }
   result.T_world_odom = map.T_world_odom();
   if (current_has_pose && map.hasKeyframe(reference_keyframe)) {
-    result.reference_keyframe = reference_keyframe;
-    result.T_keyframe_camera = map.keyframe(reference_keyframe).T_camera_world * current.T_camera_world.inverse();
+    result.replay.reference_keyframe = reference_keyframe;
+    result.replay.T_keyframe_camera = map.keyframe(reference_keyframe).T_camera_world * current.T_camera_world.inverse();
   }
   return result;
 }
@@ -432,11 +432,11 @@ const std::vector<VisualMap>& VisualSlam::retiredMaps() const { return impl_->re
 
 std::optional<Eigen::Isometry3d> VisualSlam::relocateInFinalMap(const VisualFrameResult& result,
                                                                 const Eigen::Isometry3d& T_world_camera_initial) const {
-  if (result.observations.points.empty() && result.observations.lines.empty()) return std::nullopt;
+  if (result.replay.observations.points.empty() && result.replay.observations.lines.empty()) return std::nullopt;
   if (result.map_id < 0 || result.map_id > impl_->map_id) return std::nullopt;
   const VisualMap& map = result.map_id == impl_->map_id ? impl_->map : impl_->retired_maps[result.map_id];
   const auto T_camera_world =
-      relocateInMap(map, result.observations, T_world_camera_initial.inverse(), impl_->K, impl_->tracker);
+      relocateInMap(map, result.replay.observations, T_world_camera_initial.inverse(), impl_->K, impl_->tracker);
   if (!T_camera_world) return std::nullopt;
   return T_camera_world->inverse();
 }

@@ -1,0 +1,43 @@
+#pragma once
+// VisualSlam's settings: the algorithm settings (VisualConfig) plus those of
+// the tracking loop (initialisation, tracking windows, relocalisation) and of
+// the mapping modules it runs.
+#include <cstddef>
+
+#include "lvslam/visual/module/line_depth_check.h"
+#include "lvslam/visual/module/map_culling.h"
+#include "lvslam/visual/module/point_triangulation.h"
+#include "lvslam/visual/tracking/image_statistics.h"
+#include "lvslam/visual/visual_config.h"
+
+namespace lvslam::visual {
+
+struct VisualSlamConfig {
+  VisualConfig visual;
+  ImageUsabilityConfig usability;
+  int min_keypoints = 100;  // fewer: the frame is not usable (featureless, blurred)
+  // Initialisation (ORB-SLAM): matches reference -> current in a window.
+  double init_window_px = 100.0;
+  int min_init_matches = 100;
+  int max_init_frames = 30;     // a reference older than this is replaced
+  double hint_radius_px = 3.0;  // a depth hint serves keypoints this close
+  // A frame given hints of which too few reach keypoints is passed over as
+  // the first view, at most this many times in a row.
+  int max_unhinted_references = 10;
+  // Tracking.
+  double search_radius_px = 15.0;
+  double refine_radius_px = 5.0;
+  double recovery_radius_scale = 3.0;  // wider window after a failure / when lost
+  int min_tracked = 30;                // point + line inliers
+  // Lost: relocalisation into the old map for this many frames, then a new map.
+  int relocalize_frames = 15;
+  size_t relocalize_candidates = 4;  // covisible neighbours of the reference keyframe tried as pose guesses
+  int relocalize_min_inliers = 50;   // point inliers to accept a relocalisation (ORB-SLAM: 50)
+  int fusion_line_lifetime = 15;  // frames a fusion line waits for a keyframe observation
+  size_t lidar_pose_buffer = 64;  // LiDAR poses kept for keyframes (> init window + LiDAR lag)
+  PointTriangulationConfig triangulation;
+  CullingConfig culling;
+  LineDepthCheckConfig depth_check;
+};
+
+}  // namespace lvslam::visual
