@@ -310,6 +310,12 @@ TEST(RosbagConvertBadInput, UnknownEncodingNamesBagTopicAndEncoding) {
   png.resize(png.size() / 2);
   const std::string bag4 = writeOneMessageBag(dir4, "/cam", testing::compressedImage(kT0, png, "png"));
   expectMentions(convertError(bag4, "", "/cam", dir4), {bag4, "/cam", "damaged PNG: the file ends at byte"});
+  // Found by fuzz_ros_image: data that is not PNG or JPEG (here a JPEG 2000
+  // signature) under a png format never reaches OpenCV's other decoders.
+  testing::TempDir dir5;
+  const std::vector<std::uint8_t> jp2 = {0x00, 0x00, 0x00, 0x0c, 'j', 'P', ' ', ' ', 0x0d, 0x0a, 0x87, 0x0a};
+  const std::string bag5 = writeOneMessageBag(dir5, "/cam", testing::compressedImage(kT0, jp2, "png"));
+  expectMentions(convertError(bag5, "", "/cam", dir5), {bag5, "/cam", "neither PNG nor JPEG"});
   // A failed conversion leaves nothing: no folder, no partial one.
   EXPECT_FALSE(std::filesystem::exists(dir3.file("out")));
   EXPECT_FALSE(std::filesystem::exists(dir3.file("out.partial")));

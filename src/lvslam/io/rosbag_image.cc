@@ -45,6 +45,11 @@ ImageFrame decodeRosCompressedImage(const std::vector<std::uint8_t>& serialized,
     throw Error(where, fmt::format("unsupported compressed image format '{}' (supported: jpeg, png)", msg.format.c_str()));
   // A damaged PNG is named here; OpenCV would let libpng print its own line.
   const std::string_view raw(reinterpret_cast<const char*>(msg.data.data()), msg.data.size());
+  // OpenCV decodes whatever its signature sniffing finds (JPEG 2000, GDAL's
+  // formats, some leaking a file per failure): only PNG and JPEG reach it.
+  if (!raw.empty() && !raw.starts_with("\x89PNG\r\n\x1a\n") && !raw.starts_with("\xff\xd8\xff"))
+    throw Error(where, fmt::format("cannot decode the compressed image: its data is neither PNG nor JPEG (format '{}')",
+                                   msg.format.c_str()));
   if (raw.starts_with("\x89PNG")) checkPngChunks(raw, where);
   const cv::Mat bytes(1, static_cast<int>(msg.data.size()), CV_8UC1, const_cast<std::uint8_t*>(msg.data.data()));
   cv::Mat image;
