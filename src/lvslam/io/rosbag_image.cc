@@ -46,7 +46,8 @@ ImageFrame decodeRosCompressedImage(const std::vector<std::uint8_t>& serialized,
   // A damaged PNG is named here; OpenCV would let libpng print its own line.
   const std::string_view raw(reinterpret_cast<const char*>(msg.data.data()), msg.data.size());
   // OpenCV decodes whatever its signature sniffing finds (JPEG 2000, GDAL's
-  // formats, some leaking a file per failure): only PNG and JPEG reach it.
+  // formats; fuzzed, the process ran out of file descriptors): only PNG and
+  // JPEG reach it.
   if (!raw.empty() && !raw.starts_with("\x89PNG\r\n\x1a\n") && !raw.starts_with("\xff\xd8\xff"))
     throw Error(where, fmt::format("cannot decode the compressed image: its data is neither PNG nor JPEG (format '{}')",
                                    msg.format.c_str()));

@@ -107,7 +107,7 @@ class FusedOnline final : public OnlineOutput {
     const OutputSource admitted = detection_.update(healthOf(*v));
     FrameOutput frame = frameAt(v->t, OutputSource::kLidar, detection_.lastProblem());
     std::optional<VisualFrameInput> visual;
-    if (admitted == OutputSource::kVisual) visual = visualInput(*v);
+    if (admitted == OutputSource::kVisual) visual = visualInput(v->result);
     const FusedFrameOutput out = estimator_.add(v->t, lidarInput(*l), visual);
     camera_nodes_.push_back(out.camera_node);
     if (v->result.T_world_odom) placements_[v->result.map_id] = v->result.T_world_odom->inverse();
@@ -141,15 +141,14 @@ class FusedOnline final : public OnlineOutput {
 
   // The frame's visual pose in its map as tracked, with the map's
   // corrections since the last frame.
-  static std::optional<VisualFrameInput> visualInput(const VisualFrameRecord& v) {
-    const visual::VisualFrameResult& r = v.result;
+  static std::optional<VisualFrameInput> visualInput(const visual::VisualFrameResult& r) {
     if (!r.pose_valid || !r.pose_information) return std::nullopt;
     VisualFrameInput in;
     in.map_id = r.map_id;
-    in.T_map_camera = visualPoseOf(v, false);
+    in.T_map_camera = r.T_world_camera;
     in.information = *r.pose_information;
     in.T_new_old = r.T_new_old;
-    if (r.initial_reference) in.initial_view = initialReferenceOf(v, false);
+    in.initial_view = r.initial_reference;
     return in;
   }
 
