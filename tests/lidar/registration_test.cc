@@ -1,6 +1,8 @@
 // Multi-metric ICP recovers a known transform between two scans of one scene.
 #include <cmath>
+#include <random>
 
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 #include "lidar/synthetic_lidar.h"
@@ -47,6 +49,98 @@ TEST(MultiMetricIcp, RecoversAKnownTransformToAMillimetreScale) {
     EXPECT_FALSE(result.degenerate);
     EXPECT_TRUE(result.converged) << reassociate_motion;
   }
+}
+
+FeaturePoint featureAt(const Eigen::Vector3d& p, const Eigen::Vector3d& direction, FeatureClass cls) {
+  FeaturePoint fp;
+  fp.p = p.cast<float>();
+  fp.direction = direction.normalized().cast<float>();
+  fp.cls = cls;
+  return fp;
+}
+
+// A corridor along x without ends: walls y = +-1.2, floor z = -1.2 and ceiling
+// z = 1.6 about the sensor, with PCA normals tilted by up to +-5 deg toward
+// the axis (what range noise and flush door frames do to them), and returns
+// within +-5 mm of the surfaces.
+FeatureFrame corridorFeatures(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> along(-12.0, 12.0), across(-1.0, 1.0), tilt(-0.087, 0.087), noise(-0.005, 0.005);
+  FeatureFrame frame;
+  for (int i = 0; i < 600; ++i) {
+    const int surface = i % 4;
+    const double sign = surface % 2 == 0 ? 1.0 : -1.0;
+    const Eigen::Vector3d normal = surface < 2 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitZ();
+    const double offset = surface < 2 ? 1.2 : (sign > 0 ? 1.6 : 1.2);
+    const Eigen::Vector3d in_plane = surface < 2 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d p = along(rng) * Eigen::Vector3d::UnitX() + across(rng) * in_plane +
+                              (sign * offset + noise(rng)) * normal;
+    frame.points.push_back(featureAt(p, normal + tilt(rng) * Eigen::Vector3d::UnitX(),
+                                     surface < 2 ? FeatureClass::kFacade : FeatureClass::kGround));
+  }
+  return frame;
+}
+
+// Only rows aligned with a direction count toward seeing it (X-ICP): the
+// walls' tilted normals add up to an eigenvalue along the axis that, counted
+// whole (localizability_angle_deg 90), takes noise for information. Counted
+// as aligned rows, the axis is not seen: it keeps the guess and carries no
+// information, while the lateral offset is recovered.
+TEST(MultiMetricIcp, ACorridorsAxisIsNotLocalizableAndKeepsTheGuess) {
+  const LidarOdometryConfig config;
+  LocalMap map(config.local_map);
+  map.update(corridorFeatures(1));
+  FeatureFrame moved = corridorFeatures(2);  // seen from 5 cm further along +y
+  for (FeaturePoint& fp : moved.points) fp.p.y() -= 0.05f;
+
+  const IcpResult result = registerMultiMetric(moved.points, map, Eigen::Isometry3d::Identity(), 0.5, config.registration);
+  EXPECT_TRUE(result.degenerate);
+  // The blind direction is x mixed with a little rotation (the tilts): x
+  // moves well under a millimetre and keeps a sliver of information; counted
+  // whole, x claims ten times as much.
+  EXPECT_LT(std::abs(result.T_world_lidar.translation().x()), 1e-3);
+  EXPECT_NEAR(result.T_world_lidar.translation().y(), 0.05, 0.005);
+  EXPECT_LT(result.information(0, 0), 5e-4 * result.information(1, 1));
+
+  RegistrationConfig every_row = config.registration;
+  every_row.localizability_angle_deg = 90.0;
+  const IcpResult whole = registerMultiMetric(moved.points, map, Eigen::Isometry3d::Identity(), 0.5, every_row);
+  EXPECT_FALSE(whole.degenerate);
+  EXPECT_GT(whole.information(0, 0), 2e-3 * whole.information(1, 1));
+}
+
+// Whether a direction is seen does not depend on what else is in view: three
+// posts fix x, y and yaw to within the robust kernel however much ground
+// surrounds them (an open yard), although their information is less than a
+// thousandth of the ground's (the ratio test it replaced held them).
+TEST(MultiMetricIcp, AFewPostsInOpenGroundAreSeenWhateverTheGround) {
+  const LidarOdometryConfig config;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> ground(-30.0, 30.0);
+  FeatureFrame frame;
+  for (int i = 0; i < 20000; ++i)
+    frame.points.push_back(featureAt(Eigen::Vector3d(ground(rng), ground(rng), -1.5), Eigen::Vector3d::UnitZ(),
+                                     FeatureClass::kGround));
+  for (const Eigen::Vector2d post : {Eigen::Vector2d(6, 2), Eigen::Vector2d(-3, 7), Eigen::Vector2d(-5, -6)})
+    for (int k = 0; k < 3; ++k)
+      frame.points.push_back(featureAt(Eigen::Vector3d(post.x(), post.y(), -1.0 + 0.8 * k), Eigen::Vector3d::UnitZ(),
+                                       FeatureClass::kPillar));
+  LocalMap map(config.local_map);
+  map.update(frame);
+  const Eigen::Isometry3d T_true = makePose(Eigen::Quaterniond(Eigen::AngleAxisd(0.01, Eigen::Vector3d::UnitZ())),
+                                            Eigen::Vector3d(0.06, -0.04, 0.0));
+  std::vector<FeaturePoint> source = frame.points;
+  for (FeaturePoint& fp : source) {
+    fp.p = (T_true.inverse() * fp.p.cast<double>()).cast<float>();
+    fp.direction = (T_true.linear().transpose() * fp.direction.cast<double>()).cast<float>();
+  }
+  const IcpResult result = registerMultiMetric(source, map, Eigen::Isometry3d::Identity(), 0.5, config.registration);
+  EXPECT_FALSE(result.degenerate);
+  const Eigen::Isometry3d error = T_true.inverse() * result.T_world_lidar;
+  EXPECT_LT(error.translation().norm(), 1e-3);
+  EXPECT_LT(rotationAngle(error), 1e-4);
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> information(result.information);
+  EXPECT_LT(information.eigenvalues()(0), 1e-3 * information.eigenvalues()(5));
 }
 
 // Three facade planes, x = 0.6 r_x, y = 0.6 r_y and z = 0.6 r_z, each

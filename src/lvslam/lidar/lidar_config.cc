@@ -43,7 +43,7 @@ ConfigKeys configKeys(LidarOdometryConfig& c) {
       .add("registration.initial_threshold", r.initial_threshold)
       .add("registration.min_threshold", r.min_threshold)
       .add("registration.max_threshold", r.max_threshold)
-      .add("registration.degeneracy_ratio", r.degeneracy_ratio)
+      .add("registration.localizability_angle_deg", r.localizability_angle_deg)
       .add("registration.min_correspondences", r.min_correspondences)
       .add("registration.min_inlier_ratio", r.min_inlier_ratio)
       .add("registration.restart_after_lost", r.restart_after_lost)
@@ -89,6 +89,8 @@ void validate(const LidarOdometryConfig& c, const std::string& file) {
   check(r.reassociate_motion >= 0, "registration.reassociate_motion", "must not be negative");
   check(r.min_threshold > 0 && r.min_threshold <= r.max_threshold, "registration.min_threshold",
         "need 0 < min_threshold <= max_threshold");
+  check(r.localizability_angle_deg > 0 && r.localizability_angle_deg <= 90, "registration.localizability_angle_deg",
+        "must be in (0, 90]");
   check(r.range_sigma > 0, "registration.range_sigma", "must be positive");
   check(r.beam_divergence >= 0, "registration.beam_divergence", "must not be negative");
   check(r.restart_after_lost >= 0, "registration.restart_after_lost", "must not be negative (0: never)");

@@ -57,7 +57,10 @@ struct RegistrationConfig {
   double initial_threshold = 1.0;  // metres, correspondence distance before the adaptive threshold knows better
   double min_threshold = 0.15;     // metres
   double max_threshold = 2.0;      // metres
-  double degeneracy_ratio = 2e-3;  // smallest / largest eigenvalue of the normal matrix
+  // A residual row counts toward a principal direction's localizability
+  // only within this angle of it (X-ICP); a direction is localizable when
+  // those rows fix it to within the robust kernel (a third of the threshold).
+  double localizability_angle_deg = 75.0;
   std::size_t min_correspondences = 30;
   // Correspondences per feature, relative to the mean of the last good
   // registrations (1 before any); fewer: registered to the wrong place.

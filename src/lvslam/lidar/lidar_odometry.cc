@@ -121,7 +121,7 @@ OdometryResult LidarOdometry::registerScan() {
   }
   result.correspondences = icp.correspondences;
   result.iterations = icp.iterations;
-  result.condition = icp.condition;
+  result.localizability = icp.localizability;
   return result;
 }
 

@@ -39,7 +39,7 @@ struct OdometryResult {
   std::size_t features = 0;
   std::size_t correspondences = 0;
   int iterations = 0;
-  double condition = 0.0;  // smallest / largest eigenvalue of the scaled normal matrix
+  double localizability = 0.0;  // IcpResult::localizability
   // Information of T_world_lidar against the local map (IcpResult::information);
   // zero unless the scan was registered (tracking or degenerate).
   Matrix6d information = Matrix6d::Zero();

@@ -54,12 +54,12 @@ LoopVerification verifyLoop(const std::vector<lidar::FeaturePoint>& query, const
   v.correspondences = icp.correspondences;
   v.inlier_ratio = static_cast<double>(icp.correspondences) / static_cast<double>(query.size());
   v.degenerate = icp.degenerate;
-  v.condition = icp.condition;
+  v.localizability = icp.localizability;
   v.information = icp.information;
   if (icp.correspondences < icp_config.min_correspondences)
     v.reason = fmt::format("{} correspondences (< {})", icp.correspondences, icp_config.min_correspondences);
   else if (icp.degenerate)
-    v.reason = fmt::format("degenerate (condition {:.2g})", icp.condition);
+    v.reason = fmt::format("degenerate (localizability {:.2g})", icp.localizability);
   else if (v.inlier_ratio < config.min_inlier_ratio)
     v.reason = fmt::format("inlier ratio {:.2f} (< {:.2f})", v.inlier_ratio, config.min_inlier_ratio);
   else if (v.rms > config.max_rms)

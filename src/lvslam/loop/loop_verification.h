@@ -30,7 +30,7 @@ struct LoopVerification {
   double inlier_ratio = 0.0;  // correspondences per query feature
   std::size_t correspondences = 0;
   bool degenerate = false;
-  double condition = 0.0;
+  double localizability = 0.0;  // IcpResult::localizability
   Matrix6d information = Matrix6d::Zero();  // of T_candidate_query (right perturbation), from the ICP
 };
 

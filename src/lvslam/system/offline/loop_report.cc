@@ -32,7 +32,7 @@ std::string candidateJson(const loop::LoopCandidateRecord& c) {
         .addNumber("inlier_ratio", v.inlier_ratio)
         .addCount("correspondences", v.correspondences)
         .addRaw("degenerate", v.degenerate ? "true" : "false")
-        .addNumber("condition", v.condition)
+        .addNumber("localizability", v.localizability)
         .addRaw("T_candidate_query_xyz", eval::jsonArray({t.x(), t.y(), t.z()}))
         .addNumber("T_candidate_query_deg", rotationAngle(v.T_candidate_query) * 180.0 / M_PI);
   }
