@@ -98,7 +98,7 @@ void LidarWorker::finish() {
   registerPending();
   if (extrinsic_check_) recordExtrinsicVerdict(extrinsic_check_->finish());
   frames_provisional_.clear();  // no later sweep: their within-sweep pose stands
-  poseWaitingFrames(true, false);
+  poseWaitingFrames(true, false, false);
 }
 
 // A frame is posed as soon as the sweep covering its time is registered,
@@ -108,7 +108,7 @@ void LidarWorker::finish() {
 // replaces it in the record (for the estimator's window and the offline
 // refinement; the online output already out is not revised). At the end,
 // frames after the last sweep are extrapolated with the constant velocity.
-void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable) {
+void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable, bool prior_worthy) {
   if (scan_trajectory_.empty()) return;
   const StampedPose& last = scan_trajectory_.back();
   const double sweep = scan_trajectory_.size() >= 2 ? last.t - scan_trajectory_[scan_trajectory_.size() - 2].t : 0.0;
@@ -128,7 +128,7 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable) {
     }
     const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
     pose(index, interpolateAtTime(frame.t, before.t, before.T_world_frame, last.t, last.T_world_frame));
-    if (reliable && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frames_[index].T_odom_lidar * *T_lidar_camera_});
+    if (reliable && prior_worthy && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frames_[index].T_odom_lidar * *T_lidar_camera_});
   }
   frames_provisional_ = std::move(still_provisional);
   std::vector<std::size_t> still_waiting;
@@ -177,9 +177,13 @@ void LidarWorker::registerPending() {
     offerKeyframe(result);
     map_.add(odometry_.currentFrame());
   }
-  // A frame between a lost scan and its neighbour has no pose worth a prior.
-  poseWaitingFrames(false, !lost && !previous_scan_lost_);
+  // A frame next to a lost scan has no pose worth a factor; next to a scan
+  // blind along some direction (held at the prediction there), none worth
+  // a visual prior, whose covariance is isotropic.
+  const bool whole = !lost && result.status != lidar::OdometryStatus::kDegenerate;
+  poseWaitingFrames(false, !lost && !previous_scan_lost_, whole && previous_scan_whole_);
   previous_scan_lost_ = lost;
+  previous_scan_whole_ = whole;
 }
 
 }  // namespace lvslam::system

@@ -68,7 +68,8 @@ class LidarWorker {
 
  private:
   void registerPending();
-  void poseWaitingFrames(bool extrapolate, bool reliable);
+  // reliable: worth a LiDAR factor; prior_worthy: worth a visual pose prior too.
+  void poseWaitingFrames(bool extrapolate, bool reliable, bool prior_worthy);
   void offerKeyframe(const lidar::OdometryResult& result);
   void checkExtrinsic(double t, const std::vector<fusion::ImageSegment>& segments);
   void recordExtrinsicVerdict(const std::optional<fusion::ExtrinsicVerdict>& verdict);
@@ -90,6 +91,7 @@ class LidarWorker {
   std::optional<Eigen::Isometry3d> T_lidar_camera_;
   Trajectory new_camera_poses_;                      // for the next answer
   bool previous_scan_lost_ = false;
+  bool previous_scan_whole_ = true;  // registered in every direction
   Matrix6d last_information_ = Matrix6d::Zero();  // of the last registered scan
   FramePosed on_frame_posed_;
   std::vector<ScanRecord> scans_;
