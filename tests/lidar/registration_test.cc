@@ -121,7 +121,7 @@ TEST(MultiMetricIcp, AFewPostsInOpenGroundAreSeenWhateverTheGround) {
   for (int i = 0; i < 20000; ++i)
     frame.points.push_back(featureAt(Eigen::Vector3d(ground(rng), ground(rng), -1.5), Eigen::Vector3d::UnitZ(),
                                      FeatureClass::kGround));
-  for (const Eigen::Vector2d post : {Eigen::Vector2d(6, 2), Eigen::Vector2d(-3, 7), Eigen::Vector2d(-5, -6)})
+  for (const Eigen::Vector2d& post : {Eigen::Vector2d(6, 2), Eigen::Vector2d(-3, 7), Eigen::Vector2d(-5, -6)})
     for (int k = 0; k < 3; ++k)
       frame.points.push_back(featureAt(Eigen::Vector3d(post.x(), post.y(), -1.0 + 0.8 * k), Eigen::Vector3d::UnitZ(),
                                        FeatureClass::kPillar));

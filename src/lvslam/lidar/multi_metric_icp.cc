@@ -19,6 +19,42 @@ constexpr double kRotationScale = 10.0;
 // Pseudo-residuals of the pooled variance in each class's variance.
 constexpr double kVariancePriorCount = 10.0;
 
+// Linear system of one Gauss-Newton step, with each feature class's share
+// (its residuals have a variance of their own: point-to-point residuals of
+// scattered vertices are tens of times those of point-to-plane ones).
+struct ClassEquations {
+  Matrix6d H = Matrix6d::Zero();
+  double squared_error = 0.0;
+  std::size_t count = 0;
+  ClassEquations& operator+=(const ClassEquations& o) {
+    H += o.H;
+    squared_error += o.squared_error;
+    count += o.count;
+    return *this;
+  }
+};
+
+struct NormalEquations {
+  Matrix6d H = Matrix6d::Zero();
+  Vector6d b = Vector6d::Zero();
+  double squared_error = 0.0;  // of the residuals, each weighed by its return's noise
+  std::size_t count = 0;
+  std::array<ClassEquations, kFeatureClassCount> classes;
+};
+
+// Which principal directions of the class-weighted information (rotation
+// scaled by 10 m to compare with translation) the registration can see.
+struct Localizability {
+  Matrix6d directions = Matrix6d::Identity();  // columns, ascending eigenvalue
+  // Information along each direction from the rows aligned with it, times the
+  // robust kernel's width squared: at least 1 when the scan fixes it to
+  // within the kernel.
+  Vector6d seen = Vector6d::Zero();
+  std::array<bool, 6> usable{};
+  bool degenerate() const;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> usableBasis() const;
+};
+
 NormalEquations& operator+=(NormalEquations& a, const NormalEquations& b) {
   a.H += b.H;
   a.b += b.b;
@@ -185,15 +221,8 @@ struct DirectionSums {
   }
 };
 
-}  // namespace
-
-ClassEquations& ClassEquations::operator+=(const ClassEquations& o) {
-  H += o.H;
-  squared_error += o.squared_error;
-  count += o.count;
-  return *this;
-}
-
+// Each class's residual variance (of a return of weight 1), shrunk toward
+// the pooled one by a few pseudo-residuals, and at least `floor`.
 std::array<double, kFeatureClassCount> classVariances(const NormalEquations& eq, double floor) {
   std::array<double, kFeatureClassCount> variance{};
   const double pooled = eq.count > 0 ? eq.squared_error / static_cast<double>(eq.count) : 0.0;
@@ -207,8 +236,8 @@ std::array<double, kFeatureClassCount> classVariances(const NormalEquations& eq,
   return variance;
 }
 
-Matrix6d classWeightedInformation(const NormalEquations& eq, double floor) {
-  const auto variance = classVariances(eq, floor);
+// Censi's information J^T J / sigma^2, each class's share over its own variance.
+Matrix6d classWeightedInformation(const NormalEquations& eq, const std::array<double, kFeatureClassCount>& variance) {
   Matrix6d information = Matrix6d::Zero();
   for (int c = 0; c < kFeatureClassCount; ++c)
     if (eq.classes[c].count > 0 && variance[c] > 0) information += eq.classes[c].H / variance[c];
@@ -231,6 +260,9 @@ bool Localizability::degenerate() const {
   return false;
 }
 
+// The update (body-frame perturbation T <- T exp(x), (rho, phi)) solving
+// H x = -b within the usable directions; the others stay at the guess
+// (solution remapping, Zhang et al., ICRA 2016).
 Vector6d solveInSubspace(const NormalEquations& eq, const Localizability& loc) {
   const Vector6d& s = rotationScaling();
   const Eigen::Matrix<double, 6, Eigen::Dynamic> U = loc.usableBasis();
@@ -255,8 +287,6 @@ Matrix6d usableInformation(const NormalEquations& eq, const Localizability& loc)
   return inverse.asDiagonal() * scaled * inverse.asDiagonal();
 }
 
-namespace {
-
 // X-ICP's localizability (Tuna et al., T-RO 2023, Sec. IV): along each
 // principal direction of the information only residual rows aligned with it
 // count; the many rows nearly orthogonal to it (a corridor's walls along its
@@ -268,13 +298,11 @@ Localizability analyseLocalizability(const Correspondences& corr, const NormalEq
   Localizability loc;
   const Vector6d& s = rotationScaling();
   // No residual is more precise than the sensor (noise-free data fits exactly).
-  const double floor = corr.config.range_sigma * corr.config.range_sigma;
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(s.asDiagonal() * classWeightedInformation(eq, floor) *
+  const auto variance = classVariances(eq, corr.config.range_sigma * corr.config.range_sigma);
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> solver(s.asDiagonal() * classWeightedInformation(eq, variance) *
                                                        s.asDiagonal());
   loc.directions = solver.eigenvectors();
-  loc.eigenvalues = solver.eigenvalues().cwiseMax(0.0);
-  if (!loc.eigenvalues.allFinite()) return loc;  // nothing usable
-  const auto variance = classVariances(eq, floor);
+  if (!solver.eigenvalues().allFinite()) return loc;  // nothing usable
   const double min_cos = std::cos(corr.config.localizability_angle_deg * M_PI / 180.0);
   const Matrix6d& V = loc.directions;
   const DirectionSums sums = corr.reduce<DirectionSums>([&](const Correspondence& c, DirectionSums& acc) {

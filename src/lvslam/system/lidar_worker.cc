@@ -128,7 +128,7 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable, bool prior_
     }
     const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
     pose(index, interpolateAtTime(frame.t, before.t, before.T_world_frame, last.t, last.T_world_frame));
-    if (reliable && prior_worthy && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frames_[index].T_odom_lidar * *T_lidar_camera_});
+    if (prior_worthy && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frames_[index].T_odom_lidar * *T_lidar_camera_});
   }
   frames_provisional_ = std::move(still_provisional);
   std::vector<std::size_t> still_waiting;

@@ -68,7 +68,8 @@ class LidarWorker {
 
  private:
   void registerPending();
-  // reliable: worth a LiDAR factor; prior_worthy: worth a visual pose prior too.
+  // reliable: worth a LiDAR factor; prior_worthy (implies reliable): worth a
+  // visual pose prior too.
   void poseWaitingFrames(bool extrapolate, bool reliable, bool prior_worthy);
   void offerKeyframe(const lidar::OdometryResult& result);
   void checkExtrinsic(double t, const std::vector<fusion::ImageSegment>& segments);
