@@ -63,9 +63,10 @@ FeaturePoint featureAt(const Eigen::Vector3d& p, const Eigen::Vector3d& directio
 // z = 1.6 about the sensor, with PCA normals tilted by up to +-5 deg toward
 // the axis (what range noise and flush door frames do to them), and returns
 // within +-5 mm of the surfaces.
-FeatureFrame corridorFeatures(std::uint32_t seed) {
+FeatureFrame corridorFeatures(std::uint32_t seed, double max_tilt = 0.087) {
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> along(-12.0, 12.0), across(-1.0, 1.0), tilt(-0.087, 0.087), noise(-0.005, 0.005);
+  std::uniform_real_distribution<double> along(-12.0, 12.0), across(-1.0, 1.0), tilt(-max_tilt, max_tilt),
+      noise(-0.005, 0.005);
   FeatureFrame frame;
   for (int i = 0; i < 600; ++i) {
     const int surface = i % 4;
@@ -109,6 +110,39 @@ TEST(MultiMetricIcp, ACorridorsAxisIsNotLocalizableAndKeepsTheGuess) {
   EXPECT_GT(whole.information(0, 0), 2e-3 * whole.information(1, 1));
 }
 
+// The information reported along a seen direction is that of the rows
+// aligned with it: a post fixes the corridor's axis, and the walls' tilted
+// normals, which would add as much again counted whole, add nothing.
+TEST(MultiMetricIcp, ASeenDirectionsInformationIsThatOfTheRowsAlignedWithIt) {
+  const LidarOdometryConfig config;
+  const Eigen::Isometry3d T_true = makePose(Eigen::Quaterniond::Identity(), Eigen::Vector3d(0.03, 0.02, 0.0));
+  const auto axisInformation = [&](double max_tilt, double angle_deg) {
+    FeatureFrame frame = corridorFeatures(1, max_tilt);
+    for (int k = 0; k < 3; ++k)  // a post by the wall
+      frame.points.push_back(featureAt(Eigen::Vector3d(4.0, 1.0, -0.8 + 0.8 * k), Eigen::Vector3d::UnitZ(),
+                                       FeatureClass::kPillar));
+    LocalMap map(config.local_map);
+    map.update(frame);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> noise(-0.005, 0.005);
+    std::vector<FeaturePoint> source = frame.points;
+    for (FeaturePoint& fp : source)
+      fp.p = (T_true.inverse() * fp.p.cast<double>() + Eigen::Vector3d(noise(rng), noise(rng), noise(rng)))
+                 .cast<float>();
+    RegistrationConfig registration = config.registration;
+    registration.localizability_angle_deg = angle_deg;
+    const IcpResult result = registerMultiMetric(source, map, Eigen::Isometry3d::Identity(), 0.5, registration);
+    EXPECT_NEAR(result.T_world_lidar.translation().x(), 0.03, 0.01) << max_tilt << " " << angle_deg;
+    return result.information(0, 0);
+  };
+  const double untilted = axisInformation(0.0, 75.0);
+  const double tilted = axisInformation(0.087, 75.0);
+  const double tilted_whole = axisInformation(0.087, 90.0);
+  ASSERT_GT(untilted, 0.0);
+  EXPECT_NEAR(tilted / untilted, 1.0, 0.15);
+  EXPECT_GT(tilted_whole, 1.5 * tilted);
+}
+
 // Whether a direction is seen does not depend on what else is in view: three
 // posts fix x, y and yaw to within the robust kernel however much ground
 // surrounds them (an open yard), although their information is less than a
@@ -145,8 +179,10 @@ TEST(MultiMetricIcp, AFewPostsInOpenGroundAreSeenWhateverTheGround) {
 
 // Three facade planes, x = 0.6 r_x, y = 0.6 r_y and z = 0.6 r_z, each
 // sampled on its circle of radius r_axis about the sensor (every return of
-// a plane at the same range, to float rounding); the scan's points are
-// moved off their plane by +-1 cm and back onto their sphere.
+// a plane at the same range, to float rounding) by 45, 60 and 75 returns
+// (so that no two principal directions share an eigenvalue: each is
+// defined, not one of a plane's worth); the scan's points are moved off
+// their plane by +-1 cm and back onto their sphere.
 FeatureFrame planesAtRanges(const Eigen::Vector3d& ranges, bool noisy) {
   FeatureFrame frame;
   for (int axis = 0; axis < 3; ++axis) {
@@ -154,8 +190,9 @@ FeatureFrame planesAtRanges(const Eigen::Vector3d& ranges, bool noisy) {
     const Eigen::Vector3d normal = Eigen::Vector3d::Unit(axis);
     const Eigen::Vector3d u = Eigen::Vector3d::Unit((axis + 1) % 3), v = Eigen::Vector3d::Unit((axis + 2) % 3);
     const double radius = std::sqrt(r * r - a * a);
-    for (int k = 0; k < 60; ++k) {
-      const double phi = 2.0 * M_PI * k / 60.0;
+    const int returns = 45 + 15 * axis;
+    for (int k = 0; k < returns; ++k) {
+      const double phi = 2.0 * M_PI * k / returns;
       const double offset = noisy ? ((k % 3) - 1) * 0.01 : 0.0;
       const Eigen::Vector3d on_plane = a * normal + radius * (std::cos(phi) * u + std::sin(phi) * v);
       FeaturePoint fp;

@@ -13,6 +13,7 @@ ConfigKeys configKeys(LidarOdometryConfig& c) {
   auto& m = c.local_map;
   ConfigKeys keys;
   keys.add("deskew", c.deskew).add("recent_frames", c.recent_frames).add("max_time_gap", c.max_time_gap);
+  keys.add("motion_accel", c.motion_accel).add("motion_angular_accel_deg", c.motion_angular_accel_deg);
   keys.add("preprocess.min_range", p.min_range)
       .add("preprocess.max_range", p.max_range)
       .add("preprocess.voxel_size", p.voxel_size)
@@ -101,6 +102,8 @@ void validate(const LidarOdometryConfig& c, const std::string& file) {
   check(m.refined_rate_alpha > 0 && m.refined_rate_alpha <= 1, "local_map.refined_rate_alpha", "must be in (0, 1]");
   check(c.recent_frames >= 0, "recent_frames", "must not be negative");
   check(c.max_time_gap > 0, "max_time_gap", "must be positive");
+  check(c.motion_accel > 0, "motion_accel", "must be positive");
+  check(c.motion_angular_accel_deg > 0, "motion_angular_accel_deg", "must be positive");
 }
 
 }  // namespace lvslam::lidar

@@ -105,6 +105,11 @@ struct LidarOdometryConfig {
   bool deskew = true;
   int recent_frames = 4;       // frames whose features the fusion framework sees
   double max_time_gap = 0.5;   // seconds between scans; longer: motion unknown
+  // The velocity that predicts and deskews the next scan changes by about
+  // this much per second (1 sigma): a registration's step along a direction
+  // it saw poorly moves it only as far as the two uncertainties say.
+  double motion_accel = 2.0;              // m/s^2
+  double motion_angular_accel_deg = 90.0;  // deg/s^2
 };
 
 // The keys of the `lidar:` section ("preprocess.min_range"), bound to `config`.

@@ -55,7 +55,10 @@ void LidarOdometry::prepare(const LidarScan& scan) {
   current_.seq = next_seq_++;
   // After a gap in time the velocity says nothing about the motion since.
   time_jump_ = has_previous_ && scan.timestamp - previous_time_ > config_.max_time_gap;
-  if (time_jump_) velocity_.setZero();
+  if (time_jump_) {
+    velocity_.setZero();
+    velocity_covariance_ = VelocityEstimate{}.covariance;
+  }
   std::vector<TimedPoint> points = cropAndDownsample(scan, config_.preprocess, config_.features.neighbour_radius);
   const bool deskew = config_.deskew && scan.has_time;
   mid_offset_ = deskew ? midOffset(points) : 0.0;
@@ -116,7 +119,8 @@ OdometryResult LidarOdometry::registerScan() {
     recent_inlier_ratios_.push_back(inlier_ratio);
     if (recent_inlier_ratios_.size() > kInlierRatioHistory) recent_inlier_ratios_.pop_front();
     if (!time_jump_) threshold_.update(correction);
-    result = finish(icp.degenerate ? OdometryStatus::kDegenerate : OdometryStatus::kTracking, icp.T_world_lidar);
+    result = finish(icp.degenerate ? OdometryStatus::kDegenerate : OdometryStatus::kTracking, icp.T_world_lidar,
+                    icp.information);
     result.information = icp.information;
   }
   result.correspondences = icp.correspondences;
@@ -125,12 +129,20 @@ OdometryResult LidarOdometry::registerScan() {
   return result;
 }
 
-OdometryResult LidarOdometry::finish(OdometryStatus status, const Eigen::Isometry3d& T_registered) {
+OdometryResult LidarOdometry::finish(OdometryStatus status, const Eigen::Isometry3d& T_registered,
+                                     const Matrix6d& information) {
   const bool registered = status != OdometryStatus::kLost;
   const double mid_time = current_.timestamp + mid_offset_;
   const Eigen::Isometry3d T_world_mid = T_registered * motionOver(velocity_, mid_offset_);
   if (registered && has_previous_ && !time_jump_) {
-    const Vector6d refined = velocityBetween(T_world_previous_mid_, previous_mid_time_, T_world_mid, mid_time);
+    Vector6d refined = velocityBetween(T_world_previous_mid_, previous_mid_time_, T_world_mid, mid_time);
+    if (!information.isZero()) {  // a registration: weighed against the prediction
+      const VelocityEstimate filtered =
+          updateVelocity({velocity_, velocity_covariance_}, refined, information, mid_time - previous_mid_time_,
+                         {config_.motion_accel, config_.motion_angular_accel_deg * M_PI / 180.0});
+      refined = filtered.velocity;
+      velocity_covariance_ = filtered.covariance;
+    }
     if (current_.deskew != DeskewState::kRaw) {
       redeskew(current_, velocity_, refined);
       current_.deskew = DeskewState::kRefined;

@@ -19,6 +19,7 @@
 #include "lvslam/lidar/lidar_config.h"
 #include "lvslam/lidar/local_map.h"
 #include "lvslam/lidar/multi_metric_icp.h"
+#include "lvslam/lidar/velocity_filter.h"
 
 namespace lvslam::lidar {
 
@@ -75,7 +76,10 @@ class LidarOdometry {
   const Vector6d& velocity() const { return velocity_; }  // body twist per second
 
  private:
-  OdometryResult finish(OdometryStatus status, const Eigen::Isometry3d& T);
+  // information: the registration's, which weighs its step against the
+  // predicted velocity (zero: no registration, the step is taken as is).
+  OdometryResult finish(OdometryStatus status, const Eigen::Isometry3d& T,
+                        const Matrix6d& information = Matrix6d::Zero());
   static void redeskew(FeatureFrame& frame, const Vector6d& old_velocity, const Vector6d& new_velocity);
   IcpResult bootstrapSecondFrame(const IcpResult& first_try, double threshold);
   double typicalInlierRatio() const;  // mean of recent_inlier_ratios_, 1 without any
@@ -105,6 +109,7 @@ class LidarOdometry {
   double previous_time_ = 0.0;
   Eigen::Isometry3d T_world_previous_ = Eigen::Isometry3d::Identity();  // at the previous time stamp
   Vector6d velocity_ = Vector6d::Zero();
+  Matrix6d velocity_covariance_ = VelocityEstimate{}.covariance;
   std::uint32_t next_seq_ = 0;
 };
 

@@ -50,6 +50,8 @@ struct Localizability {
   // robust kernel's width squared: at least 1 when the scan fixes it to
   // within the kernel.
   Vector6d seen = Vector6d::Zero();
+  // The same rows' information with weight only (no class variance).
+  Vector6d aligned_weight = Vector6d::Zero();
   std::array<bool, 6> usable{};
   bool degenerate() const;
   Eigen::Matrix<double, 6, Eigen::Dynamic> usableBasis() const;
@@ -215,8 +217,10 @@ const Vector6d& rotationScaling() {
 // Information along each principal direction from the rows aligned with it.
 struct DirectionSums {
   Vector6d aligned = Vector6d::Zero();
+  Vector6d aligned_weight = Vector6d::Zero();
   DirectionSums& operator+=(const DirectionSums& o) {
     aligned += o.aligned;
+    aligned_weight += o.aligned_weight;
     return *this;
   }
 };
@@ -276,13 +280,15 @@ Vector6d solveInSubspace(const NormalEquations& eq, const Localizability& loc) {
 
 Matrix6d usableInformation(const NormalEquations& eq, const Localizability& loc) {
   if (eq.count == 0 || !(eq.squared_error > 0)) return Matrix6d::Zero();
-  // H over the pooled variance (what the estimator's weights were measured
-  // with), projected onto the localizable directions.
+  // Along each seen direction, the information of the rows aligned with it
+  // over the pooled variance (what the estimator's weights were measured
+  // with): the rows nearly orthogonal to it carry their normals' noise.
   const Vector6d& s = rotationScaling();
-  const Eigen::Matrix<double, 6, Eigen::Dynamic> U = loc.usableBasis();
-  const Matrix6d P = U * U.transpose();
   const double variance = eq.squared_error / static_cast<double>(eq.count);
-  const Matrix6d scaled = P * (s.asDiagonal() * eq.H * s.asDiagonal()) * P / variance;
+  Matrix6d scaled = Matrix6d::Zero();
+  for (int i = 0; i < 6; ++i)
+    if (loc.usable[i])
+      scaled += loc.directions.col(i) * loc.directions.col(i).transpose() * (loc.aligned_weight(i) / variance);
   const Vector6d inverse = s.cwiseInverse();
   return inverse.asDiagonal() * scaled * inverse.asDiagonal();
 }
@@ -314,11 +320,15 @@ Localizability analyseLocalizability(const Correspondences& corr, const NormalEq
       if (!(norm > 0)) continue;
       const Eigen::Matrix<double, 1, 6> along = J * V;
       for (int i = 0; i < 6; ++i)
-        if (std::abs(along(i)) >= min_cos * norm) acc.aligned(i) += c.weight * along(i) * along(i) / v;
+        if (std::abs(along(i)) >= min_cos * norm) {
+          acc.aligned(i) += c.weight * along(i) * along(i) / v;
+          acc.aligned_weight(i) += c.weight * along(i) * along(i);
+        }
     }
   });
   const double kernel = corr.threshold / 3.0;
   loc.seen = sums.aligned * kernel * kernel;
+  loc.aligned_weight = sums.aligned_weight;
   for (int i = 0; i < 6; ++i) loc.usable[i] = loc.seen(i) >= 1.0;
   return loc;
 }

@@ -26,9 +26,10 @@ struct IcpResult {
   // kernel's width squared, last iteration: below 1 it was not seen.
   double localizability = 0.0;
   double rms_residual = 0.0;    // metres, last iteration
-  // The pose's information (body-frame perturbation, (rho, phi)): Censi's
-  // J^T J / sigma^2 of the last iteration (sigma^2 the pooled variance of a
-  // return of weight 1), projected onto the directions seen.
+  // The pose's information (body-frame perturbation, (rho, phi)): along each
+  // principal direction seen, Censi's J^T J / sigma^2 of the last
+  // iteration's residual rows aligned with it (sigma^2 the pooled variance
+  // of a return of weight 1); none along the others.
   Matrix6d information = Matrix6d::Zero();
 };
 
