@@ -55,17 +55,14 @@ void LidarOdometry::prepare(const LidarScan& scan) {
   current_.seq = next_seq_++;
   // After a gap in time the velocity says nothing about the motion since.
   time_jump_ = has_previous_ && scan.timestamp - previous_time_ > config_.max_time_gap;
-  if (time_jump_) {
-    velocity_.setZero();
-    velocity_covariance_ = VelocityEstimate{}.covariance;
-  }
+  if (time_jump_) motion_ = VelocityEstimate{};
   std::vector<TimedPoint> points = cropAndDownsample(scan, config_.preprocess, config_.features.neighbour_radius);
   const bool deskew = config_.deskew && scan.has_time;
   mid_offset_ = deskew ? midOffset(points) : 0.0;
   const Eigen::Isometry3d T_world_mid =
-      T_world_previous_mid_ * motionOver(velocity_, scan.timestamp + mid_offset_ - previous_mid_time_);
-  current_.T_world_lidar = has_previous_ ? T_world_mid * motionOver(velocity_, -mid_offset_) : T_world_previous_;
-  if (deskew) deskewToReference(points, velocity_);
+      T_world_previous_mid_ * motionOver(motion_.velocity, scan.timestamp + mid_offset_ - previous_mid_time_);
+  current_.T_world_lidar = has_previous_ ? T_world_mid * motionOver(motion_.velocity, -mid_offset_) : T_world_previous_;
+  if (deskew) deskewToReference(points, motion_.velocity);
   current_.deskew = deskew ? DeskewState::kPredicted : DeskewState::kRaw;
   current_.points = extractFeatures(points, config_.ground, config_.features);
 }
@@ -133,23 +130,20 @@ OdometryResult LidarOdometry::finish(OdometryStatus status, const Eigen::Isometr
                                      const Matrix6d& information) {
   const bool registered = status != OdometryStatus::kLost;
   const double mid_time = current_.timestamp + mid_offset_;
-  const Eigen::Isometry3d T_world_mid = T_registered * motionOver(velocity_, mid_offset_);
+  const Eigen::Isometry3d T_world_mid = T_registered * motionOver(motion_.velocity, mid_offset_);
   if (registered && has_previous_ && !time_jump_) {
-    Vector6d refined = velocityBetween(T_world_previous_mid_, previous_mid_time_, T_world_mid, mid_time);
-    if (!information.isZero()) {  // a registration: weighed against the prediction
-      const VelocityEstimate filtered =
-          updateVelocity({velocity_, velocity_covariance_}, refined, information, mid_time - previous_mid_time_,
-                         {config_.motion_accel, config_.motion_angular_accel_deg * M_PI / 180.0});
-      refined = filtered.velocity;
-      velocity_covariance_ = filtered.covariance;
-    }
+    const Vector6d step = velocityBetween(T_world_previous_mid_, previous_mid_time_, T_world_mid, mid_time);
+    VelocityEstimate next{step, motion_.covariance};
+    if (!information.isZero())  // a registration: weighed against the prediction
+      next = updateVelocity(motion_, step, information, mid_time - previous_mid_time_,
+                            {config_.motion_accel, config_.motion_angular_accel_deg * M_PI / 180.0});
     if (current_.deskew != DeskewState::kRaw) {
-      redeskew(current_, velocity_, refined);
+      redeskew(current_, motion_.velocity, next.velocity);
       current_.deskew = DeskewState::kRefined;
     }
-    velocity_ = refined;
+    motion_ = next;
   }
-  current_.T_world_lidar = T_world_mid * motionOver(velocity_, -mid_offset_);
+  current_.T_world_lidar = T_world_mid * motionOver(motion_.velocity, -mid_offset_);
   if (registered) {
     map_.update(current_);
     recent_.push_back(current_);
@@ -188,7 +182,7 @@ double LidarOdometry::typicalInlierRatio() const {
 // registration gives one: compensate the first frame with it, rebuild the map
 // and register again, so the whole run does not inherit a skewed map.
 IcpResult LidarOdometry::bootstrapSecondFrame(const IcpResult& first_try, double threshold) {
-  const Eigen::Isometry3d T_world_mid = first_try.T_world_lidar * motionOver(velocity_, mid_offset_);
+  const Eigen::Isometry3d T_world_mid = first_try.T_world_lidar * motionOver(motion_.velocity, mid_offset_);
   const Vector6d v =
       velocityBetween(T_world_previous_mid_, previous_mid_time_, T_world_mid, current_.timestamp + mid_offset_);
   FeatureFrame& first = recent_.front();
@@ -196,15 +190,15 @@ IcpResult LidarOdometry::bootstrapSecondFrame(const IcpResult& first_try, double
   first.deskew = DeskewState::kRefined;
   // The first frame's time stamp pose is the world origin; its middle moved on.
   T_world_previous_mid_ = first.T_world_lidar * motionOver(v, previous_mid_time_ - first.timestamp);
-  redeskew(current_, velocity_, v);
-  velocity_ = v;
+  redeskew(current_, motion_.velocity, v);
+  motion_.velocity = v;
   map_ = LocalMap(config_.local_map);
   map_.update(first);
   return registerMultiMetric(current_.points, map_, first_try.T_world_lidar, threshold, config_.registration);
 }
 
 std::vector<FeaturePoint> LidarOdometry::currentFeaturesAt(double t) const {
-  const Eigen::Isometry3d T_at_ref = motionOver(velocity_, t - current_.timestamp).inverse();
+  const Eigen::Isometry3d T_at_ref = motionOver(motion_.velocity, t - current_.timestamp).inverse();
   std::vector<FeaturePoint> moved = current_.points;
   for (FeaturePoint& fp : moved) {
     fp.p = (T_at_ref * fp.p.cast<double>()).cast<float>();
@@ -215,7 +209,7 @@ std::vector<FeaturePoint> LidarOdometry::currentFeaturesAt(double t) const {
 }
 
 Eigen::Isometry3d LidarOdometry::poseAt(double t) const {
-  return current_.T_world_lidar * motionOver(velocity_, t - current_.timestamp);
+  return current_.T_world_lidar * motionOver(motion_.velocity, t - current_.timestamp);
 }
 
 std::size_t LidarOdometry::setLinearDirections(std::span<const FeatureId> ids, const Eigen::Vector3d& direction_world) {

@@ -73,7 +73,7 @@ class LidarOdometry {
   std::size_t setLinearDirections(std::span<const FeatureId> ids, const Eigen::Vector3d& direction_world);
 
   const LocalMap& localMap() const { return map_; }
-  const Vector6d& velocity() const { return velocity_; }  // body twist per second
+  const Vector6d& velocity() const { return motion_.velocity; }  // body twist per second
 
  private:
   // information: the registration's, which weighs its step against the
@@ -108,8 +108,7 @@ class LidarOdometry {
   Eigen::Isometry3d T_world_previous_mid_ = Eigen::Isometry3d::Identity();
   double previous_time_ = 0.0;
   Eigen::Isometry3d T_world_previous_ = Eigen::Isometry3d::Identity();  // at the previous time stamp
-  Vector6d velocity_ = Vector6d::Zero();
-  Matrix6d velocity_covariance_ = VelocityEstimate{}.covariance;
+  VelocityEstimate motion_;  // predicts and deskews the next scan
   std::uint32_t next_seq_ = 0;
 };
 
