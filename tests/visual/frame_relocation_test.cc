@@ -71,10 +71,11 @@ TEST(RelocateInMap, FollowsLandmarksThatMovedAfterTracking) {
   EXPECT_LT(rotationAngle(*T_moved * expected.inverse()), 1e-6);
 }
 
-// Landmarks culled or merged since are marked bad and keep stale positions
-// (here 1 cm off, too little for the chi2 test to reject them): they must not
-// pull the pose; with too few left the frame is not moved.
-TEST(RelocateInMap, SkipsBadLandmarksAndNeedsEnoughInliers) {
+// Landmarks culled or merged since are gone from the map (here moved 1 cm
+// first, too little for the chi2 test to reject them, had they stayed): the
+// frame's observations of them are skipped; with too few left the frame is
+// not moved.
+TEST(RelocateInMap, SkipsRemovedLandmarksAndNeedsEnoughInliers) {
   const SyntheticScene s = testing::makeScene(3, 150, 0, 0.2, 22);
   const Eigen::Isometry3d T = s.T_camera_world[2];
   SceneMap m = mapOf(s, Eigen::Isometry3d::Identity());

@@ -43,7 +43,7 @@ class LocalMapperTest : public ::testing::Test {
   std::vector<int> newLandmarks(int first_id) const {
     std::vector<int> ids;
     for (const auto& [id, l] : map_.points())
-      if (id >= first_id && !l.bad) ids.push_back(id);
+      if (id >= first_id) ids.push_back(id);
     return ids;
   }
 
@@ -110,7 +110,7 @@ TEST_F(LocalMapperTest, RecentPointsTrackingRarelyFindsAreCulledAtTheNextKeyfram
   const LocalMappingResult r = mapper.process(map_, 3);
   // Found 1 of 5 times: 1 < 0.25 * 5. Found 5 of 5 times: kept.
   EXPECT_EQ(r.culled_points, static_cast<int>(made.size() - found.size()));
-  for (std::size_t j = 0; j < made.size(); ++j) EXPECT_EQ(map_.point(made[j]).bad, j % 2 == 1) << made[j];
+  for (std::size_t j = 0; j < made.size(); ++j) EXPECT_EQ(map_.hasPoint(made[j]), j % 2 == 0) << made[j];
 }
 
 }  // namespace

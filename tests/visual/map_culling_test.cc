@@ -54,16 +54,15 @@ TEST(MapCulling, RecentPointsFailingEitherTestAreCulledOthersStayOrAreReleased) 
   recent[observed] = {2, 3, 3};  // age 2 with two observers: kept, still recent
   const int released = m.point({1, 3});
   recent[released] = {1, 3, 3};  // age 3: no longer recent, kept
-  const int bad = m.point({4});
-  m.map.removePoint(bad);
-  recent[bad] = {4, 1, 1};
+  const int removed = m.point({4});
+  m.map.removePoint(removed);
+  recent[removed] = {4, 1, 1};
   recent[12345] = {4, 1, 1};  // not in the map
 
   EXPECT_EQ(cullRecentPoints(m.map, recent, current, config), 2);
-  EXPECT_TRUE(m.map.point(rarely_found).bad);
-  EXPECT_TRUE(m.map.point(rarely_found).observations.empty());
-  EXPECT_TRUE(m.map.point(lonely).bad);
-  for (const int kept : {found_enough, observed, released}) EXPECT_FALSE(m.map.point(kept).bad) << kept;
+  EXPECT_FALSE(m.map.hasPoint(rarely_found));
+  EXPECT_FALSE(m.map.hasPoint(lonely));
+  for (const int kept : {found_enough, observed, released}) EXPECT_TRUE(m.map.hasPoint(kept)) << kept;
   EXPECT_EQ(m.map.keyframe(4).point_landmark[0], -1);  // rarely_found's observation went with it
   // Only the two still recent remain in the table.
   EXPECT_EQ(recent.size(), 2u);
@@ -85,11 +84,11 @@ TEST(MapCulling, RecentLinesNeedTwoObserversEvenWhenPointsNeedMore) {
   const int rare_line = m.line({3, 4});
   lines[rare_line] = {3, 5, 1};
   EXPECT_EQ(cullRecentPoints(m.map, points, 4, config), 1);
-  EXPECT_TRUE(m.map.point(point).bad);
+  EXPECT_FALSE(m.map.hasPoint(point));
   EXPECT_EQ(cullRecentLines(m.map, lines, 4, config), 2);
-  EXPECT_FALSE(m.map.line(line).bad);
-  EXPECT_TRUE(m.map.line(lonely_line).bad);
-  EXPECT_TRUE(m.map.line(rare_line).bad);
+  EXPECT_TRUE(m.map.hasLine(line));
+  EXPECT_FALSE(m.map.hasLine(lonely_line));
+  EXPECT_FALSE(m.map.hasLine(rare_line));
   EXPECT_EQ(lines.size(), 1u);
 }
 

@@ -41,12 +41,12 @@ class PointMergingTest : public ::testing::Test {
   std::vector<int> keypoint_point_[3];
 };
 
-TEST_F(PointMergingTest, ReplacePointMovesObservationsAndMarksTheDuplicateBad) {
+TEST_F(PointMergingTest, ReplacePointMovesObservationsAndRemovesTheDuplicate) {
   const int a = landmark(0, {0, 1});
   const int b = landmark(0, {2});
   map_.replacePoint(b, a);
-  EXPECT_TRUE(map_.point(b).bad);
-  EXPECT_TRUE(map_.point(b).observations.empty());
+  EXPECT_FALSE(map_.hasPoint(b));
+  EXPECT_THROW(map_.point(b), Error);
   EXPECT_EQ(map_.point(a).observations.size(), 3u);
   EXPECT_EQ(map_.covisibility().weight(ids_[0], ids_[2]), 1);
   EXPECT_THROW(map_.replacePoint(a, 12345), Error);
@@ -76,10 +76,10 @@ TEST_F(PointMergingTest, UnobservedProjectionsGainObservationsAndDuplicatesMerge
   EXPECT_EQ(r.merged, static_cast<int>(duplicate_ids.size()));
   EXPECT_EQ(r.added, static_cast<int>(shared.size() - duplicate_ids.size()));
   for (const int id : old_ids) {
-    EXPECT_FALSE(map_.point(id).bad);
+    EXPECT_TRUE(map_.hasPoint(id));
     EXPECT_EQ(map_.point(id).observations.size(), 3u);  // the better observed landmark survives
   }
-  for (const int id : duplicate_ids) EXPECT_TRUE(map_.point(id).bad);
+  for (const int id : duplicate_ids) EXPECT_FALSE(map_.hasPoint(id));
   EXPECT_TRUE(map_.point(wrong).observations.empty());
 }
 
@@ -96,7 +96,7 @@ TEST_F(PointMergingTest, LocalKeyframesFollowTheLandmarksTheLastFrameTracked) {
   EXPECT_EQ(local.keyframes[0], ids_[0]);
   EXPECT_EQ(local.most_shared, ids_[1]);  // ties: the smaller id first
   map_.removePoint(only_0);
-  const LocalKeyframes none = selectLocalKeyframes(map_, {only_0, 999}, ids_[2]);  // bad and unknown ids are ignored
+  const LocalKeyframes none = selectLocalKeyframes(map_, {only_0, 999}, ids_[2]);  // removed and unknown ids are ignored
   EXPECT_EQ(none.keyframes, std::vector<int>{ids_[2]});
   EXPECT_EQ(none.most_shared, -1);
 }

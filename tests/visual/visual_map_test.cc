@@ -61,8 +61,8 @@ TEST(VisualMap, ObservationsBuildTheCovisibilityGraph) {
   EXPECT_EQ(map.covisibility().weight(b, c), 0);
   EXPECT_EQ(map.keyframe(c).point_landmark[7], -1);
   map.removeLine(line);
-  EXPECT_TRUE(map.line(line).bad);
-  EXPECT_TRUE(map.line(line).observations.empty());
+  EXPECT_FALSE(map.hasLine(line));
+  EXPECT_THROW(map.line(line), Error);
   EXPECT_EQ(map.keyframe(a).line_landmark[0], -1);
   EXPECT_EQ(map.covisibility().weight(a, b), 4);
 }
@@ -120,10 +120,12 @@ TEST(VisualMap, CopiesAndMovesLookUpTheirOwnLandmarks) {
   copy.point(p).p_world.x() = 10.0;
   copy.removeLine(l);
   EXPECT_EQ(&copy.point(p), &copy.points().at(p));
-  EXPECT_EQ(&copy.line(l), &copy.lines().at(l));
   EXPECT_DOUBLE_EQ(original.point(p).p_world.x(), 1.0);
-  EXPECT_FALSE(original.line(l).bad);
-  EXPECT_TRUE(copy.line(l).bad);
+  EXPECT_TRUE(original.hasLine(l));
+  EXPECT_FALSE(copy.hasLine(l));
+  // The copy's next id follows every id ever assigned, the removed line's too.
+  EXPECT_EQ(copy.addLineLandmark(original.line(l).line_world, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 1), cv::Mat()),
+            l + 1);
 
   VisualMap assigned;
   assigned = copy;

@@ -241,9 +241,8 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool final_map_rel
     if (final_map_relocation) relocateInFinalMaps(slam, records.visual);
     const auto addLines = [&records](const visual::VisualMap& map, int map_id) {
       for (const auto& [id, line] : map.lines())
-        if (!line.bad)
-          records.visual_lines.push_back(
-              {line.start_world, line.end_world, line.from_fusion, map_id, visual::firstSeen(map, line.observations)});
+        records.visual_lines.push_back(
+            {line.start_world, line.end_world, line.from_fusion, map_id, visual::firstSeen(map, line.observations)});
     };
     for (std::size_t id = 0; id < slam.retiredMaps().size(); ++id)
       addLines(slam.retiredMaps()[id], static_cast<int>(id));

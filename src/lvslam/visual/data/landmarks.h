@@ -22,7 +22,6 @@ struct PointLandmark {
   Eigen::Vector3d p_world = Eigen::Vector3d::Zero();
   cv::Mat descriptor;  // 1 x 32 ORB of a representative observation
   std::vector<Observation> observations;
-  bool bad = false;
 };
 
 struct LineLandmark {
@@ -38,7 +37,6 @@ struct LineLandmark {
   // The landmark was created from a fusion line (LiDAR depth), not by
   // two-view triangulation; its outlier test is looser (0.2 instead of 0.1).
   bool from_fusion = false;
-  bool bad = false;
 };
 
 }  // namespace lvslam::visual

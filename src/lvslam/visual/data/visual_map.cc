@@ -22,17 +22,22 @@ auto& find(Map& items, int id, const char* what) {
 }
 
 template <typename Landmark>
+bool alive(const std::vector<Landmark*>& by_id, int id) {
+  return id >= 0 && static_cast<size_t>(id) < by_id.size() && by_id[static_cast<size_t>(id)] != nullptr;
+}
+
+template <typename Landmark>
 Landmark& findById(const std::vector<Landmark*>& by_id, int id, const char* what) {
-  if (id < 0 || static_cast<size_t>(id) >= by_id.size() || by_id[static_cast<size_t>(id)] == nullptr) {
+  if (!alive(by_id, id)) {
     throw Error("VisualMap", std::string("unknown ") + what + " id " + std::to_string(id));
   }
   return *by_id[static_cast<size_t>(id)];
 }
 
-// Pointers to every landmark by id, into the map's nodes.
+// Pointers to every landmark by id, into the map's nodes; `count` ids in
+// all (removed ones null).
 template <typename Landmark>
-std::vector<Landmark*> indexById(std::map<int, Landmark>& landmarks) {
-  const size_t count = landmarks.empty() ? 0 : static_cast<size_t>(landmarks.rbegin()->first) + 1;
+std::vector<Landmark*> indexById(std::map<int, Landmark>& landmarks, size_t count) {
   std::vector<Landmark*> by_id(count, nullptr);
   for (auto& [id, landmark] : landmarks) by_id[static_cast<size_t>(id)] = &landmark;
   return by_id;
@@ -50,7 +55,8 @@ std::optional<double> upperMedian(std::vector<double> values) {
 VisualMap::VisualMap(const VisualMap& other)
     : keyframes_(other.keyframes_), points_(other.points_), lines_(other.lines_),
       covisibility_(other.covisibility_), removed_(other.removed_), next_keyframe_id_(other.next_keyframe_id_),
-      T_world_odom_(other.T_world_odom_), point_by_id_(indexById(points_)), line_by_id_(indexById(lines_)) {}
+      T_world_odom_(other.T_world_odom_), point_by_id_(indexById(points_, other.point_by_id_.size())),
+      line_by_id_(indexById(lines_, other.line_by_id_.size())) {}
 
 VisualMap& VisualMap::operator=(const VisualMap& other) {
   if (this != &other) *this = VisualMap(other);
@@ -145,20 +151,26 @@ void VisualMap::replacePoint(int from, int into) {
                                   [&](const Observation& t) { return t.keyframe == o.keyframe; });
     if (!seen) addPointObservation(into, o.keyframe, o.index);
   }
-  findById(point_by_id_, from, "point").bad = true;
+  points_.erase(from);
+  point_by_id_[static_cast<size_t>(from)] = nullptr;
 }
 
 void VisualMap::removePoint(int point) {
   PointLandmark& p = findById(point_by_id_, point, "point");
   while (!p.observations.empty()) removePointObservation(point, p.observations.back().keyframe);
-  p.bad = true;
+  points_.erase(point);
+  point_by_id_[static_cast<size_t>(point)] = nullptr;
 }
 
 void VisualMap::removeLine(int line) {
   LineLandmark& l = findById(line_by_id_, line, "line");
   while (!l.observations.empty()) removeLineObservation(line, l.observations.back().keyframe);
-  l.bad = true;
+  lines_.erase(line);
+  line_by_id_[static_cast<size_t>(line)] = nullptr;
 }
+
+bool VisualMap::hasPoint(int id) const { return alive(point_by_id_, id); }
+bool VisualMap::hasLine(int id) const { return alive(line_by_id_, id); }
 
 void VisualMap::removeKeyframe(int keyframe) {
   const Keyframe& kf = find(keyframes_, keyframe, "keyframe");
@@ -246,7 +258,7 @@ double medianSceneDepth(const VisualMap& map, int keyframe) {
   const Keyframe& k = map.keyframe(keyframe);
   std::vector<double> depths;
   for (const int p : k.point_landmark) {
-    if (p >= 0 && !map.point(p).bad) depths.push_back((k.T_camera_world * map.point(p).p_world).z());
+    if (map.hasPoint(p)) depths.push_back((k.T_camera_world * map.point(p).p_world).z());
   }
   return upperMedian(std::move(depths)).value_or(0.0);
 }
@@ -259,10 +271,8 @@ std::optional<double> firstSeen(const VisualMap& map, const std::vector<Observat
 std::optional<double> medianFirstSeen(const VisualMap& map, const std::vector<int>& points) {
   std::vector<double> times;
   for (const int id : points) {
-    if (id < 0) continue;
-    const PointLandmark& p = map.point(id);
-    if (p.bad) continue;
-    if (const std::optional<double> t = firstSeen(map, p.observations)) times.push_back(*t);
+    if (!map.hasPoint(id)) continue;
+    if (const std::optional<double> t = firstSeen(map, map.point(id).observations)) times.push_back(*t);
   }
   return upperMedian(std::move(times));
 }

@@ -36,9 +36,9 @@ class VisualMap {
   void removeLineObservation(int line, int keyframe);
   // Duplicate landmarks (ORB-SLAM's MapPoint::Replace): every keyframe
   // observing `from` observes `into` instead (unless it already does), and
-  // `from` is marked bad. Throws lvslam::Error on unknown ids.
+  // `from` is removed. Throws lvslam::Error on unknown ids.
   void replacePoint(int from, int into);
-  // Marks the landmark bad and drops all its observations.
+  // Drops the landmark with all its observations; its id is not reused.
   void removePoint(int point);
   void removeLine(int line);
   // Drops the keyframe's observations, its covisibility edges and the keyframe
@@ -73,6 +73,9 @@ class VisualMap {
   LineLandmark& line(int id);
   const LineLandmark& line(int id) const;
   bool hasKeyframe(int id) const { return keyframes_.count(id) != 0; }
+  // The landmark exists: false for -1, unknown and removed ids.
+  bool hasPoint(int id) const;
+  bool hasLine(int id) const;
 
   const std::map<int, Keyframe>& keyframes() const { return keyframes_; }
   const std::map<int, PointLandmark>& points() const { return points_; }
@@ -102,9 +105,9 @@ class VisualMap {
   int parentFor(int keyframe) const;
   int next_keyframe_id_ = 0;
   std::optional<Eigen::Isometry3d> T_world_odom_;
-  // Landmarks by id, for O(1) lookups: ids are dense and landmarks are never
-  // erased (only marked bad), so the next id is the index's size. Keep the
-  // copy constructor's member list in step.
+  // Landmarks by id, for O(1) lookups: every id ever assigned has a slot,
+  // null once removed, so the next id is the index's size. Keep the copy
+  // constructor's member list in step.
   std::vector<PointLandmark*> point_by_id_;
   std::vector<LineLandmark*> line_by_id_;
 };
@@ -117,7 +120,7 @@ double medianSceneDepth(const VisualMap& map, int keyframe);
 std::optional<double> firstSeen(const VisualMap& map, const std::vector<Observation>& observations);
 
 // Median time of the keyframes that first observed the given point
-// landmarks (ids < 0 and bad ones skipped): when the part of the map a pose
+// landmarks (ids < 0 and removed ones skipped): when the part of the map a pose
 // rests on was mapped. None without any.
 std::optional<double> medianFirstSeen(const VisualMap& map, const std::vector<int>& points);
 

@@ -9,7 +9,7 @@ std::vector<LineDepth> lineDepths(const VisualMap& map, int keyframe) {
   std::vector<LineDepth> out;
   const Keyframe& k = map.keyframe(keyframe);
   for (const int id : k.line_landmark) {
-    if (id < 0 || map.line(id).bad) continue;
+    if (id < 0) continue;
     const LineLandmark& l = map.line(id);
     const double z = (k.T_camera_world * (0.5 * (l.start_world + l.end_world))).z();
     if (z > 0.0 && std::isfinite(z)) out.push_back({id, z});

@@ -67,8 +67,8 @@ void LocalMapper::trimLines(VisualMap& map, const std::vector<int>& window) cons
       if (l >= 0) lines.insert(l);
   }
   for (const int id : lines) {
+    if (!map.hasLine(id)) continue;
     LineLandmark& line = map.line(id);
-    if (line.bad) continue;
     std::vector<SegmentObservation> observations;
     for (const Observation& o : line.observations) {
       const Keyframe& k = map.keyframe(o.keyframe);

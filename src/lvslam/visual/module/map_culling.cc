@@ -10,7 +10,7 @@ int cullRecent(const Landmarks& landmarks, UsageTable& recent, int current_keyfr
   int culled = 0;
   for (auto it = recent.begin(); it != recent.end();) {
     const auto found = landmarks.find(it->first);
-    if (found == landmarks.end() || found->second.bad) {
+    if (found == landmarks.end()) {
       it = recent.erase(it);
       continue;
     }
@@ -38,7 +38,6 @@ void countRedundant(const Landmarks& landmarks, const std::vector<int>& table, i
   for (const int id : table) {
     if (id < 0) continue;
     const auto& l = landmarks.at(id);
-    if (l.bad) continue;
     ++total;
     if (static_cast<int>(l.observations.size()) - 1 >= observers) ++redundant;
   }

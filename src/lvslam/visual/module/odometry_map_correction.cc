@@ -76,14 +76,14 @@ void moveLandmarks(VisualMap& map, const std::vector<int>& window, const MapCorr
     for (const int id : k.point_landmark) {
       if (id < 0 || !points.insert(id).second) continue;
       PointLandmark& p = map.point(id);
-      if (p.bad || p.observations.empty()) continue;
+      if (p.observations.empty()) continue;
       const auto M = result.T_new_old.find(p.observations.front().keyframe);
       if (M != result.T_new_old.end()) p.p_world = M->second * p.p_world;
     }
     for (const int id : k.line_landmark) {
       if (id < 0 || !lines.insert(id).second) continue;
       LineLandmark& l = map.line(id);
-      if (l.bad || l.observations.empty()) continue;
+      if (l.observations.empty()) continue;
       const auto found = result.T_new_old.find(l.observations.front().keyframe);
       if (found == result.T_new_old.end()) continue;
       const Eigen::Isometry3d& M = found->second;

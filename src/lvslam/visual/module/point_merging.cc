@@ -63,8 +63,9 @@ PointMergingResult fusePointsIntoKeyframe(VisualMap& map, int keyframe, const st
   const Eigen::Vector3d center = k.T_camera_world.inverse().translation();
   std::vector<int> candidates;
   for (const int id : points) {
+    if (!map.hasPoint(id)) continue;  // merged away earlier in this loop
     const PointLandmark& p = map.point(id);
-    if (p.bad || p.descriptor.empty() || observedBy(p, keyframe)) continue;
+    if (p.descriptor.empty() || observedBy(p, keyframe)) continue;
     const Eigen::Vector3d pc = k.T_camera_world * p.p_world;
     if (!(pc.z() > 0.05)) continue;
     const Eigen::Vector2d pixel(K.fx * pc.x() / pc.z() + K.cx, K.fy * pc.y() / pc.z() + K.cy);
@@ -76,7 +77,7 @@ PointMergingResult fusePointsIntoKeyframe(VisualMap& map, int keyframe, const st
     if (other < 0) {
       map.addPointObservation(id, keyframe, j);
       ++result.added;
-    } else if (other != id && !map.point(other).bad) {
+    } else if (other != id) {
       // The better observed landmark survives (ORB-SLAM's Fuse).
       if (map.point(other).observations.size() >= p.observations.size()) {
         map.replacePoint(id, other);
@@ -111,7 +112,7 @@ PointMergingResult mergeWithNeighbours(VisualMap& map, int keyframe, const Pinho
   std::set<int> theirs;
   for (const int kf : targets)
     for (const int p : map.keyframe(kf).point_landmark)
-      if (p >= 0 && !map.point(p).bad) theirs.insert(p);
+      if (p >= 0) theirs.insert(p);
   accumulate(fusePointsIntoKeyframe(map, keyframe, {theirs.begin(), theirs.end()}, K, config));
   return total;
 }

@@ -30,13 +30,13 @@ void collectLandmarks(const VisualMap& map, const std::vector<int>& window, Bund
   for (const int kf : window) {
     const Keyframe& k = map.keyframe(kf);
     for (const int p : k.point_landmark) {
-      if (p >= 0 && !map.point(p).bad && idx.point.count(p) == 0) {
+      if (p >= 0 && idx.point.count(p) == 0) {
         indexOf(idx.point, idx.point_ids, p);
         problem.points.push_back({map.point(p).p_world, false});
       }
     }
     for (const int l : k.line_landmark) {
-      if (l >= 0 && !map.line(l).bad && idx.line.count(l) == 0) {
+      if (l >= 0 && idx.line.count(l) == 0) {
         indexOf(idx.line, idx.line_ids, l);
         const LineLandmark& line = map.line(l);
         problem.lines.push_back({line.line_world, line.fusion_direction, false});

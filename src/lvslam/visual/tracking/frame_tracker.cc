@@ -30,16 +30,18 @@ Projection projectLocalMap(const VisualMap& map, const LocalMap& local, const Ei
                            const PinholeIntrinsics& K, double radius, const FeatureFrame& frame) {
   Projection out;
   for (const int id : local.points) {
+    if (!map.hasPoint(id)) continue;
     const PointLandmark& p = map.point(id);
     Eigen::Vector2d px;
-    if (p.bad || !projectInto(T, p.p_world, K, px) || !insideImage(px, frame)) continue;
+    if (!projectInto(T, p.p_world, K, px) || !insideImage(px, frame)) continue;
     out.points.push_back({px, radius, p.descriptor});
     out.point_ids.push_back(id);
   }
   for (const int id : local.lines) {
+    if (!map.hasLine(id)) continue;
     const LineLandmark& l = map.line(id);
     Eigen::Vector2d a, b;
-    if (l.bad || l.descriptor.empty() || !projectInto(T, l.start_world, K, a) || !projectInto(T, l.end_world, K, b) ||
+    if (l.descriptor.empty() || !projectInto(T, l.start_world, K, a) || !projectInto(T, l.end_world, K, b) ||
         !insideImage(0.5 * (a + b), frame)) {
       continue;
     }
@@ -158,12 +160,12 @@ std::optional<Eigen::Isometry3d> relocateInMap(const VisualMap& map, const Track
   std::vector<PosePointObservation> points;
   std::vector<PoseLineObservation> lines;
   for (const TrackedPointObservation& o : observations.points) {
-    const PointLandmark& p = map.point(o.landmark);
-    if (!p.bad) points.push_back({p.p_world, o.pixel.cast<double>(), o.inv_sigma2});
+    if (map.hasPoint(o.landmark))
+      points.push_back({map.point(o.landmark).p_world, o.pixel.cast<double>(), o.inv_sigma2});
   }
   for (const TrackedLineObservation& o : observations.lines) {
-    const LineLandmark& l = map.line(o.landmark);
-    if (!l.bad) lines.push_back({l.line_world, o.start.cast<double>(), o.end.cast<double>(), 1.0});
+    if (map.hasLine(o.landmark))
+      lines.push_back({map.line(o.landmark).line_world, o.start.cast<double>(), o.end.cast<double>(), 1.0});
   }
   const PoseOptimizationResult r = optimizePose(T_initial, points, lines, intrinsics, config.pose);
   if (!r.success || r.num_inliers < config.min_inliers) return std::nullopt;

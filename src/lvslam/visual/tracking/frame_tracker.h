@@ -62,7 +62,7 @@ struct TrackedObservations {
 TrackedObservations trackedObservations(const TrackedFrame& frame);
 
 // The pose T_camera_world of a frame with these observations, optimised from
-// T_initial against the map's landmarks as they stand now (bad ones skipped),
+// T_initial against the map's landmarks as they stand now (removed ones skipped),
 // with the tracker's pose optimisation. None when it fails or keeps fewer than
 // min_inliers inliers.
 std::optional<Eigen::Isometry3d> relocateInMap(const VisualMap& map, const TrackedObservations& observations,

@@ -13,7 +13,7 @@ LocalKeyframes selectLocalKeyframes(const VisualMap& map, const std::vector<int>
   std::map<int, int> votes;  // keyframe -> landmarks shared with the last frame
   for (const int id : tracked_points) {
     const auto it = map.points().find(id);
-    if (it == map.points().end() || it->second.bad) continue;
+    if (it == map.points().end()) continue;
     for (const Observation& o : it->second.observations) ++votes[o.keyframe];
   }
   std::vector<std::pair<int, int>> ranked(votes.begin(), votes.end());  // (keyframe, votes)

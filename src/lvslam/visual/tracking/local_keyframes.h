@@ -40,7 +40,7 @@ struct LocalKeyframes {
   int most_shared = -1;        // the keyframe sharing most landmarks, -1 without votes
 };
 
-// `tracked_points`: landmark ids of the last tracked frame (bad ones are
+// `tracked_points`: landmark ids of the last tracked frame (removed ones are
 // ignored). `reference_keyframe` is always included when it exists.
 LocalKeyframes selectLocalKeyframes(const VisualMap& map, const std::vector<int>& tracked_points,
                                     int reference_keyframe, const LocalKeyframeConfig& config = {});

@@ -40,7 +40,7 @@ namespace {
 
 int countGoodPoints(const VisualMap& map, const std::vector<int>& ids) {
   int n = 0;
-  for (const int id : ids) n += !map.point(id).bad && map.point(id).observations.size() >= 2;
+  for (const int id : ids) n += map.hasPoint(id) && map.point(id).observations.size() >= 2;
   return n;
 }
 

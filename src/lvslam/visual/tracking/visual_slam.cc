@@ -273,7 +273,7 @@ std::vector<int> VisualSlam::Impl::pendingFusionLines() {
   std::vector<int> ids;
   std::vector<FusionLineWait> keep;
   for (const FusionLineWait& w : fusion_lines) {
-    if (!map.lines().count(w.line) || map.line(w.line).bad) continue;
+    if (!map.hasLine(w.line)) continue;
     if (frame_index > w.until_frame) {
       if (map.line(w.line).observations.empty()) map.removeLine(w.line);  // never reached a keyframe
       continue;
@@ -319,7 +319,7 @@ bool VisualSlam::Impl::needKeyframe() const {
   int ref_tracked = reference_tracked_points;
   if (reference_tracked_keyframe != reference_keyframe) {
     ref_tracked = 0;
-    for (const int id : map.keyframe(reference_keyframe).point_landmark) ref_tracked += id >= 0 && !map.point(id).bad;
+    for (const int id : map.keyframe(reference_keyframe).point_landmark) ref_tracked += id >= 0;
   }
   return keyframeNeeded(config.visual.keyframes, current.point_inliers, ref_tracked, frame_index - last_keyframe_frame);
 }
@@ -462,7 +462,7 @@ int VisualSlam::addFusionLine(int segment, const Eigen::Vector3d& A_camera, cons
   int existing = s.current.line_landmark[segment];
   if (existing < 0 && s.current_keyframe >= 0 && s.map.hasKeyframe(s.current_keyframe))
     existing = s.map.keyframe(s.current_keyframe).line_landmark[segment];
-  if (existing >= 0 && !s.map.line(existing).bad) {
+  if (s.map.hasLine(existing)) {
     s.map.setFusionDirection(existing, d_fu);
     return existing;
   }
