@@ -1,5 +1,6 @@
 #include "lvslam/system/offline/refinement.h"
 
+#include "lvslam/system/offline/chunked_smoothing.h"
 #include "lvslam/system/offline/loop_correction.h"
 
 namespace lvslam::system {
@@ -8,7 +9,7 @@ namespace {
 
 // The estimator again, over the whole run, each LiDAR pose interpolated
 // between the sweeps around it; then its graph smoothed with every node
-// free but the first (the world). Vision enters as tracked: its poses
+// free but the first (the world), chunk by chunk (chunked_smoothing.h). Vision enters as tracked: its poses
 // placed on the map's final keyframes gain nothing here (the estimator
 // already weighs the map's drift) and lose where the final map is worse
 // than the tracking was (docs/benchmarks.md, "Offline refinement").
@@ -19,7 +20,7 @@ Trajectory smoothFusedGraph(const PipelineRecords& records, const SystemConfig& 
     replay->add(&records.visual[j], &records.lidar[j]);
   const FusedEstimator& estimator = *replay->estimator();
   std::vector<PoseNode> nodes = estimator.nodes();
-  solvePoseGraph(nodes, estimator.factors(), PoseGraphSolveConfig{3.0, 50, true});
+  smoothInChunks(nodes, estimator.factors(), ChunkedSmoothingConfig{});
   Trajectory refined;
   for (const int node : estimator.cameraNodes()) {
     const auto i = static_cast<std::size_t>(node);

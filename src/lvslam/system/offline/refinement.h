@@ -4,7 +4,8 @@
 // estimator run again on the records as they stand after the run (each
 // LiDAR pose interpolated between the sweeps around it, vision as
 // tracked), its graph smoothed over the whole run (every frame free, every
-// accepted factor, the first pose held). Visual mode and the paper's output:
+// accepted factor, the first pose held; solved in overlapping chunks so
+// that the solver's memory does not grow with the run). Visual mode and the paper's output:
 // the same per-frame output fed with each visual pose placed on its
 // keyframe as the keyframe stands at the end (final_visual_poses.h, as
 // ORB-SLAM's SaveTrajectoryTUM). LiDAR mode: each frame interpolated
