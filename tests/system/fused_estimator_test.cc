@@ -6,7 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
+
+#include "lvslam/core/error.h"
+#include "lvslam/core/se3.h"
 
 namespace lvslam::system {
 namespace {
@@ -235,6 +239,44 @@ TEST(FusedEstimator, NothingBeforeTheFirstLidarPose) {
   FusedEstimator estimator(FusedEstimatorConfig{});
   EXPECT_FALSE(estimator.add(0.0, std::nullopt, visualAt(at(0), isotropic(0.01, 0.01))).T_world_camera);
   EXPECT_TRUE(estimator.nodes().empty());
+}
+
+// Online the estimator keeps history_s of its graph, so its memory does not
+// grow with the run; the window never reads beyond that, so every output
+// is the one an estimator keeping the whole run gives. 67 s at 15 Hz, both
+// subsystems noisy about a curved path, vision lost for 3 s at 40 s.
+TEST(FusedEstimator, ALongRunKeepsItsRecentHistoryOnlyAndOutputsTheSame) {
+  FusedEstimatorConfig recent = FusedEstimatorConfig{}, whole = FusedEstimatorConfig{};
+  recent.history_s = 5.0;
+  whole.history_s = -1.0;
+  FusedEstimator kept_recent(recent), kept_whole(whole);
+  const Matrix6d H_lidar = isotropic(0.01, 0.002), H_visual = isotropic(0.005, 0.001);
+  const int frames = 1000;
+  for (int i = 0; i < frames; ++i) {
+    const double t = i * kDt;
+    Eigen::Isometry3d T = at(std::sin(0.1 * t), 0.5 * t, 0.0);
+    T.linear() = expSO3(Eigen::Vector3d(0.0, 0.0, 0.05 * t));
+    const Eigen::Isometry3d T_lidar = T * at(0.003 * std::sin(7.0 * i), 0.0, 0.002 * std::cos(5.0 * i));
+    const Eigen::Isometry3d T_visual = T * at(0.0, 0.002 * std::sin(3.0 * i), 0.0);
+    const bool seen = t < 40.0 || t > 43.0;
+    const std::optional<VisualFrameInput> visual = seen ? std::optional(visualAt(T_visual, H_visual)) : std::nullopt;
+    const FusedFrameOutput a = kept_recent.add(t, lidarAt(T_lidar, H_lidar), visual);
+    const FusedFrameOutput b = kept_whole.add(t, lidarAt(T_lidar, H_lidar), visual);
+    ASSERT_TRUE(a.T_world_camera && b.T_world_camera);
+    ASSERT_TRUE(a.T_world_camera->matrix() == b.T_world_camera->matrix()) << "frame " << i;
+    ASSERT_EQ(a.camera_node, b.camera_node);
+  }
+  EXPECT_EQ(kept_whole.cameraNodes().size(), static_cast<std::size_t>(frames));
+  EXPECT_LT(kept_recent.cameraNodes().size(), static_cast<std::size_t>(frames) / 2);
+  EXPECT_THROW(kept_recent.nodes(), Error);
+  EXPECT_THROW(kept_recent.factors(), Error);
+  EXPECT_EQ(kept_whole.nodes().size(), kept_whole.nodeTimes().size());
+}
+
+TEST(FusedEstimator, TheHistoryMustOutlastTheWindow) {
+  FusedEstimatorConfig config;
+  config.history_s = config.window_s;
+  EXPECT_THROW(FusedEstimator{config}, Error);
 }
 
 }  // namespace

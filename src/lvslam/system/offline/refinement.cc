@@ -15,7 +15,9 @@ namespace {
 // than the tracking was (docs/benchmarks.md, "Offline refinement").
 Trajectory smoothFusedGraph(const PipelineRecords& records, const SystemConfig& config,
                             const Eigen::Isometry3d& T_camera_lidar) {
-  const std::unique_ptr<OnlineOutput> replay = makeOnlineOutput(config, T_camera_lidar);
+  SystemConfig whole_run = config;
+  whole_run.estimator.history_s = -1.0;  // the replay keeps the whole graph
+  const std::unique_ptr<OnlineOutput> replay = makeOnlineOutput(whole_run, T_camera_lidar);
   for (std::size_t j = 0; j < records.visual.size() && j < records.lidar.size(); ++j)
     replay->add(&records.visual[j], &records.lidar[j]);
   const FusedEstimator& estimator = *replay->estimator();

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
+#include "lvslam/core/error.h"
 #include "lvslam/system/online/pose_information.h"
 
 namespace lvslam::system {
@@ -10,14 +12,6 @@ namespace lvslam::system {
 namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
-
-// The camera node whose time is t (a map's first view is an earlier frame).
-std::optional<int> nodeAtTime(const std::vector<double>& times, const std::vector<int>& camera_nodes, double t) {
-  const auto it = std::lower_bound(camera_nodes.begin(), camera_nodes.end(), t - 1e-9,
-                                   [&](int node, double value) { return times[static_cast<std::size_t>(node)] < value; });
-  if (it == camera_nodes.end() || std::abs(times[static_cast<std::size_t>(*it)] - t) > 1e-6) return std::nullopt;
-  return *it;
-}
 
 // A drifting frame's (the odometry's, a visual map's) random walk from its
 // previous node to the next: isotropic about the camera, growing with the
@@ -41,12 +35,15 @@ FusedEstimator::FusedEstimator(const FusedEstimatorConfig& config)
       lidar_gate_(FactorSource::kLidar, {config.motion_accel, config.motion_angular_accel_deg * kDegToRad,
                                          config.gate_accept_after}),
       visual_gate_(FactorSource::kVisual, {config.motion_accel, config.motion_angular_accel_deg * kDegToRad,
-                                           config.gate_accept_after}) {}
+                                           config.gate_accept_after}) {
+  if (config.history_s >= 0.0 && !(config.history_s > config.window_s))
+    throw Error("FusedEstimator", "history_s must exceed window_s (or be negative: the whole run)");
+}
 
 FusedEstimator::Candidate FusedEstimator::makeCandidate(PoseFactor factor) const {
   Candidate c;
   c.rank = pseudoInverse(factor.information).rank;
-  c.T_world_implied = nodes_[static_cast<std::size_t>(factor.from)].T_world_camera * factor.T_from_to;
+  c.T_world_implied = nodeAt(factor.from).T_world_camera * factor.T_from_to;
   c.factor = std::move(factor);
   return c;
 }
@@ -55,12 +52,68 @@ int FusedEstimator::addNode(double t, const Eigen::Isometry3d& T, bool fixed) {
   times_.push_back(t);
   nodes_.push_back({T, fixed});
   factors_to_.emplace_back();
-  return static_cast<int>(nodes_.size()) - 1;
+  return first_node_ + static_cast<int>(nodes_.size()) - 1;
 }
 
 void FusedEstimator::accept(const PoseFactor& factor) {
-  factors_to_[static_cast<std::size_t>(factor.to)].push_back(static_cast<int>(factors_.size()));
+  factorsTo(factor.to).push_back(first_factor_ + static_cast<int>(factors_.size()));
   factors_.push_back(factor);
+}
+
+// The camera node whose time is t (a map's first view is an earlier frame).
+std::optional<int> FusedEstimator::cameraNodeAt(double t) const {
+  const auto it = std::lower_bound(camera_nodes_.begin(), camera_nodes_.end(), t - 1e-9,
+                                   [&](int node, double value) { return timeOf(node) < value; });
+  if (it == camera_nodes_.end() || std::abs(timeOf(*it) - t) > 1e-6) return std::nullopt;
+  return *it;
+}
+
+// Drops what lies more than history_s behind the newest frame. The window
+// (window_s < history_s) reads only its own nodes' factors and the nodes
+// they start from, all recent: the previous camera, odometry-frame and map
+// nodes, and a new map's first view. A map unseen for history_s loses its
+// last node and is placed afresh when it is seen again. Stored ids are
+// erased in batches of kForgetBatch nodes, so that the vectors shift rarely.
+void FusedEstimator::forget(double t_newest) {
+  constexpr int kForgetBatch = 2000;
+  if (config_.history_s < 0.0) return;
+  const double horizon = t_newest - config_.history_s;
+  int keep = first_node_;
+  while (keep - first_node_ < static_cast<int>(times_.size()) && timeOf(keep) < horizon) ++keep;
+  if (last_lidar_) keep = std::min(keep, last_lidar_->first);
+  if (keep - first_node_ < kForgetBatch) return;
+  for (auto it = last_visual_.begin(); it != last_visual_.end();)
+    it = it->second.map_node < keep ? last_visual_.erase(it) : std::next(it);
+  int keep_factor = first_factor_ + static_cast<int>(factors_.size());
+  for (int id = keep; id < first_node_ + static_cast<int>(nodes_.size()); ++id)
+    for (const int f : factorsTo(id)) keep_factor = std::min(keep_factor, f);
+  const auto drop = [](auto& items, int count) { items.erase(items.begin(), items.begin() + count); };
+  drop(times_, keep - first_node_);
+  drop(nodes_, keep - first_node_);
+  drop(factors_to_, keep - first_node_);
+  drop(factors_, keep_factor - first_factor_);
+  first_node_ = keep;
+  first_factor_ = keep_factor;
+  const auto first_camera = std::lower_bound(camera_nodes_.begin(), camera_nodes_.end(), keep);
+  camera_nodes_.erase(camera_nodes_.begin(), first_camera);
+}
+
+double FusedEstimator::chiSquare(const PoseFactor& factor) const {
+  const std::vector<PoseNode> ends{nodeAt(factor.from), nodeAt(factor.to)};
+  PoseFactor between = factor;
+  between.from = 0;
+  between.to = 1;
+  return factorChiSquare(between, ends);
+}
+
+const std::vector<PoseNode>& FusedEstimator::nodes() const {
+  if (first_node_ != 0) throw Error("FusedEstimator", "nodes(): the history was not kept (history_s >= 0)");
+  return nodes_;
+}
+
+const std::vector<PoseFactor>& FusedEstimator::factors() const {
+  if (first_factor_ != 0) throw Error("FusedEstimator", "factors(): the history was not kept (history_s >= 0)");
+  return factors_;
 }
 
 // The odometry's camera pose, seen through a new odometry-frame node: the
@@ -73,7 +126,7 @@ void FusedEstimator::accept(const PoseFactor& factor) {
 // there on is trusted, not the position it dead-reckoned to.
 std::optional<FusedEstimator::Candidate> FusedEstimator::lidarFactor(int node, const LidarFrameInput& lidar,
                                                                      bool new_start) {
-  const double t = times_[static_cast<std::size_t>(node)];
+  const double t = timeOf(node);
   if (!last_lidar_) {  // the first LiDAR pose defines the world
     const int odom = addNode(t, Eigen::Isometry3d::Identity(), true);
     last_lidar_ = std::make_pair(odom, lidar);
@@ -81,7 +134,7 @@ std::optional<FusedEstimator::Candidate> FusedEstimator::lidarFactor(int node, c
   }
   const int previous_odom = last_lidar_->first;
   const LidarFrameInput previous = last_lidar_->second;
-  const int odom = addNode(t, nodes_[static_cast<std::size_t>(previous_odom)].T_world_camera, false);
+  const int odom = addNode(t, nodeAt(previous_odom).T_world_camera, false);
   last_lidar_ = std::make_pair(odom, lidar);
   const PseudoInverse seen = pseudoInverse(lidar.information);
   if (seen.rank == 0) return std::nullopt;
@@ -104,7 +157,7 @@ std::optional<FusedEstimator::Candidate> FusedEstimator::visualFactor(int node, 
   const auto last = last_visual_.find(visual.map_id);
   if (visual.T_new_old && last != last_visual_.end()) last->second.T_new_old = *visual.T_new_old * last->second.T_new_old;
   if (!use) return std::nullopt;
-  const double t = times_[static_cast<std::size_t>(node)];
+  const double t = timeOf(node);
   const Matrix6d& information = visual.information;
   const PseudoInverse seen = pseudoInverse(information);
   if (seen.rank == 0) return std::nullopt;
@@ -112,21 +165,21 @@ std::optional<FusedEstimator::Candidate> FusedEstimator::visualFactor(int node, 
   if (last != last_visual_.end()) {
     const LastVisual held = last->second;
     const Eigen::Isometry3d T_old_new = held.T_new_old.inverse();
-    map_node = addNode(t, nodes_[static_cast<std::size_t>(held.map_node)].T_world_camera * T_old_new, false);
+    map_node = addNode(t, nodeAt(held.map_node).T_world_camera * T_old_new, false);
     if (!new_start)
       accept({held.map_node, map_node, T_old_new,
               driftInformation(held.T_new_old * held.T_map_camera, visual.T_map_camera, seen, config_.visual_drift_m,
                                config_.visual_drift_deg * kDegToRad),
               FactorSource::kVisual});
   } else {
-    const Eigen::Isometry3d& T_world_camera = nodes_[static_cast<std::size_t>(node)].T_world_camera;
+    const Eigen::Isometry3d& T_world_camera = nodeAt(node).T_world_camera;
     map_node = addNode(t, T_world_camera * visual.T_map_camera.inverse(), false);
     const std::optional<int> first =
-        visual.initial_view ? nodeAtTime(times_, camera_nodes_, visual.initial_view->t) : std::nullopt;
+        visual.initial_view ? cameraNodeAt(visual.initial_view->t) : std::nullopt;
     if (first) {  // measured from the first view's node: the map's frame as that view places it
       const Eigen::Isometry3d T_first_map = visual.initial_view->T_world_frame.inverse();
-      nodes_[static_cast<std::size_t>(map_node)].T_world_camera =
-          nodes_[static_cast<std::size_t>(*first)].T_world_camera * T_first_map;
+      nodeAt(map_node).T_world_camera =
+          nodeAt(*first).T_world_camera * T_first_map;
       // The factor map -> first view, turned round to end at the map's node:
       // its residual is -Ad(T_map_first) times the original one.
       const Matrix6d Ad = adjointSE3(T_first_map);
@@ -142,14 +195,14 @@ std::optional<FusedEstimator::Candidate> FusedEstimator::visualFactor(int node, 
 FusedEstimator::Candidate FusedEstimator::motionFactor(int node, double t) const {
   const std::size_t k = camera_nodes_.size() - 1;  // this frame's; k >= 1
   const int previous = camera_nodes_[k - 1];
-  const double dt = t - times_[static_cast<std::size_t>(previous)];
+  const double dt = t - timeOf(previous);
   Eigen::Isometry3d T_step = Eigen::Isometry3d::Identity();
   double sigma_m = config_.motion_accel * dt * dt, sigma_rad = config_.motion_angular_accel_deg * kDegToRad * dt * dt;
   if (k >= 2) {
     const int before = camera_nodes_[k - 2];
-    const double dt_before = times_[static_cast<std::size_t>(previous)] - times_[static_cast<std::size_t>(before)];
-    const Eigen::Isometry3d T_last = nodes_[static_cast<std::size_t>(before)].T_world_camera.inverse() *
-                                     nodes_[static_cast<std::size_t>(previous)].T_world_camera;
+    const double dt_before = timeOf(previous) - timeOf(before);
+    const Eigen::Isometry3d T_last = nodeAt(before).T_world_camera.inverse() *
+                                     nodeAt(previous).T_world_camera;
     if (dt_before > 0) T_step = expSE3(logSE3(T_last) * (dt / dt_before));
   } else {
     sigma_m = 2.0 * dt;  // no velocity yet: anything a walking robot does
@@ -160,23 +213,23 @@ FusedEstimator::Candidate FusedEstimator::motionFactor(int node, double t) const
 }
 
 std::optional<Matrix6d> FusedEstimator::solveWindow(int newest, int of) {
-  const double start = times_[static_cast<std::size_t>(newest)] - config_.window_s;
+  const double start = timeOf(newest) - config_.window_s;
   int first = newest;
-  while (first > 0 && times_[static_cast<std::size_t>(first - 1)] >= start) --first;
+  while (first > first_node_ && timeOf(first - 1) >= start) --first;
   // Local graph: window nodes free, every other node a factor reaches fixed.
   std::map<int, int> local;
   std::vector<PoseNode> nodes;
   std::vector<PoseFactor> factors;
   const auto localIndex = [&](int node) {
     const auto [it, inserted] = local.try_emplace(node, static_cast<int>(nodes.size()));
-    const PoseNode& held = nodes_[static_cast<std::size_t>(node)];
+    const PoseNode& held = nodeAt(node);
     if (inserted) nodes.push_back({held.T_world_camera, node < first || held.fixed});
     return it->second;
   };
   for (int node = first; node <= newest; ++node) localIndex(node);
   for (int node = first; node <= newest; ++node)
-    for (const int f : factors_to_[static_cast<std::size_t>(node)]) {
-      PoseFactor factor = factors_[static_cast<std::size_t>(f)];
+    for (const int f : factorsTo(node)) {
+      PoseFactor factor = factorAt(f);
       factor.from = localIndex(factor.from);
       factor.to = localIndex(factor.to);
       factors.push_back(std::move(factor));
@@ -187,7 +240,7 @@ std::optional<Matrix6d> FusedEstimator::solveWindow(int newest, int of) {
   if (const auto found = local.find(of); found != local.end()) covariance.node = found->second;
   if (!solvePoseGraph(nodes, factors, solve, &covariance)) return std::nullopt;
   for (const auto& [node, index] : local)
-    if (node >= first) nodes_[static_cast<std::size_t>(node)] = nodes[static_cast<std::size_t>(index)];
+    if (node >= first) nodeAt(node) = nodes[static_cast<std::size_t>(index)];
   return covariance.covariance;
 }
 
@@ -196,7 +249,7 @@ FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInp
   FusedFrameOutput out;
   if (camera_nodes_.empty() && !lidar) return out;  // the world is the odometry frame: wait for its first pose
   const Eigen::Isometry3d guess = camera_nodes_.empty() ? lidar->T_odom_camera
-                                                        : nodes_[static_cast<std::size_t>(camera_nodes_.back())].T_world_camera;
+                                                        : nodeAt(camera_nodes_.back()).T_world_camera;
   // The first camera pose is the LiDAR's: it fixes the world (a direction
   // the LiDAR cannot see at the start would otherwise float).
   const int node = addNode(t, guess, camera_nodes_.empty());
@@ -225,15 +278,15 @@ FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInp
   std::optional<Candidate> motion;
   if (camera_nodes_.size() >= 2) motion = motionFactor(node, t);
   // Start from the best single guess: the LiDAR's, else vision's, else the motion model's.
-  nodes_[static_cast<std::size_t>(node)].T_world_camera =
+  nodeAt(node).T_world_camera =
       lidar_candidate ? lidar_candidate->T_world_implied
                       : visual_candidate ? visual_candidate->T_world_implied
                                          : motion ? motion->T_world_implied : guess;
   if (motion) accept(motion->factor);
   if (lidar_candidate) accept(lidar_candidate->factor);
   if (visual_candidate) accept(visual_candidate->factor);
-  out.covariance = solveWindow(static_cast<int>(nodes_.size()) - 1, node);
-  out.T_world_camera = nodes_[static_cast<std::size_t>(node)].T_world_camera;
+  out.covariance = solveWindow(first_node_ + static_cast<int>(nodes_.size()) - 1, node);
+  out.T_world_camera = nodeAt(node).T_world_camera;
   out.camera_node = node;
   out.lidar_noise_scale = lidar_gate_.noiseScale();
   out.visual_noise_scale = visual_gate_.noiseScale();
@@ -241,14 +294,15 @@ FusedFrameOutput FusedEstimator::add(double t, const std::optional<LidarFrameInp
   out.visual_used = visual_candidate.has_value();
   if (visual_candidate)
     out.visual_chi_square_per_dof =
-        factorChiSquare(visual_candidate->factor, nodes_) / std::max(1, visual_candidate->rank);
+        chiSquare(visual_candidate->factor) / std::max(1, visual_candidate->rank);
+  forget(t);
   return out;
 }
 
 void FusedEstimator::improveLidar(int camera_node, const LidarFrameInput& lidar) {
-  if (camera_node < 0 || static_cast<std::size_t>(camera_node) >= factors_to_.size()) return;
-  for (const int f : factors_to_[static_cast<std::size_t>(camera_node)]) {
-    PoseFactor& factor = factors_[static_cast<std::size_t>(f)];
+  if (camera_node < first_node_ || camera_node >= first_node_ + static_cast<int>(factors_to_.size())) return;
+  for (const int f : factorsTo(camera_node)) {
+    PoseFactor& factor = factorAt(f);
     if (factor.source != FactorSource::kLidar) continue;
     factor.T_from_to = lidar.T_odom_camera;
     factor.information = lidar.information / lidar_gate_.noiseScale();

@@ -45,6 +45,10 @@ struct FusedEstimatorConfig {
   double motion_accel = 2.0;           // m/s^2 (1 sigma): the platform's acceleration
   double motion_angular_accel_deg = 90.0;  // deg/s^2
   int gate_accept_after = 3;  // gated steps in a row before a jump counts as a new start
+  // Seconds of nodes and factors kept behind the newest frame (more than
+  // window_s), so that online memory does not grow with the run; < 0 keeps
+  // the whole run's graph (the offline refinement's replay).
+  double history_s = 30.0;
   double huber_delta = 3.0;
   int max_iterations = 8;
 };
@@ -92,13 +96,15 @@ class FusedEstimator {
   // output stays what it was; the window's later frames gain.
   void improveLidar(int camera_node, const LidarFrameInput& lidar);
 
-  // Every node (time, latest estimate), which of them are camera frames
-  // (the others are odometry frames), and the accepted factors: the offline
-  // refinement smooths this graph over the whole run.
+  // With the whole history kept (history_s < 0): every node (time, latest
+  // estimate), which of them are camera frames (the others are odometry
+  // and map frames), and the accepted factors; the offline refinement
+  // smooths this graph over the whole run. nodes() and factors() throw
+  // once part of the history was dropped.
   const std::vector<double>& nodeTimes() const { return times_; }
-  const std::vector<PoseNode>& nodes() const { return nodes_; }
+  const std::vector<PoseNode>& nodes() const;
   const std::vector<int>& cameraNodes() const { return camera_nodes_; }
-  const std::vector<PoseFactor>& factors() const { return factors_; }
+  const std::vector<PoseFactor>& factors() const;
 
  private:
   struct Candidate {
@@ -116,10 +122,21 @@ class FusedEstimator {
   Candidate makeCandidate(PoseFactor factor) const;
   // Solves the window ending at `newest`; the covariance of node `of`.
   std::optional<Matrix6d> solveWindow(int newest, int of);
+  std::optional<int> cameraNodeAt(double t) const;
+  double chiSquare(const PoseFactor& factor) const;  // at the nodes' latest estimates
+  void forget(double t_newest);
+  // Node and factor ids count from the run's start; the stored ones begin
+  // at first_node_ and first_factor_ (forget()).
+  PoseNode& nodeAt(int id) { return nodes_[static_cast<std::size_t>(id - first_node_)]; }
+  const PoseNode& nodeAt(int id) const { return nodes_[static_cast<std::size_t>(id - first_node_)]; }
+  double timeOf(int id) const { return times_[static_cast<std::size_t>(id - first_node_)]; }
+  std::vector<int>& factorsTo(int id) { return factors_to_[static_cast<std::size_t>(id - first_node_)]; }
+  PoseFactor& factorAt(int id) { return factors_[static_cast<std::size_t>(id - first_factor_)]; }
 
   FusedEstimatorConfig config_;
   StepGate lidar_gate_, visual_gate_;
   int visual_map_ = -1;  // the map the visual gate's history is in
+  int first_node_ = 0, first_factor_ = 0;
   std::vector<double> times_;
   std::vector<PoseNode> nodes_;
   std::vector<PoseFactor> factors_;
