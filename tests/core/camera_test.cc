@@ -1,6 +1,8 @@
 #include "lvslam/core/camera.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -36,6 +38,25 @@ TEST(PinholeCamera, ProjectUnprojectRoundTripWithDistortion) {
       EXPECT_LT((*back - px).norm(), 1e-6) << u << "," << v;
     }
   }
+}
+
+// The simulator's distorted camera (k1 > 0, k2 < 0): its radial polynomial
+// r (1 + 0.12 r^2 - 0.24 r^4) peaks at r^2 = (0.36 + sqrt(0.36^2 + 4.8)) / 2.4
+// and then falls, so a point 56 deg off the axis would land 50 px right of
+// the centre. It is not projected; everything up to the peak still is.
+TEST(PinholeCamera, APointPastThePolynomialsFoldIsNotProjected) {
+  const PinholeCamera cam(640, 480, 617.971, 616.445, 327.710, 253.976,
+                          RadTanDistortion{0.12, -0.24, 0.0008, -0.0005, 0.0});
+  const double r_peak = std::sqrt((0.36 + std::sqrt(0.36 * 0.36 + 4.8)) / 2.4);
+  EXPECT_NEAR(cam.maxProjectableRadius(), r_peak, 2e-3);
+  const Eigen::Vector3d beyond(1.5, 0.0, 1.0);
+  const Eigen::Vector2d folded = cam.distortNormalized(beyond.head<2>());
+  ASSERT_TRUE(cam.inImage(Eigen::Vector2d(cam.fx() * folded.x() + cam.cx(), cam.fy() * folded.y() + cam.cy())));
+  EXPECT_FALSE(cam.project(beyond).has_value());
+  EXPECT_TRUE(cam.project(Eigen::Vector3d(0.98 * r_peak, 0.0, 1.0)).has_value());
+  // Undistorted, or distorted with a polynomial that never falls: no limit.
+  EXPECT_TRUE(std::isinf(PinholeCamera(640, 480, 500.0, 500.0, 320.0, 240.0).maxProjectableRadius()));
+  EXPECT_TRUE(std::isinf(distortedCamera().maxProjectableRadius()));
 }
 
 TEST(PinholeCamera, DistortionAgreesWithOpenCv) {

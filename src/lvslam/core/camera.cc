@@ -1,6 +1,7 @@
 #include "lvslam/core/camera.h"
 
 #include <cmath>
+#include <limits>
 
 #include <Eigen/LU>
 #include <opencv2/imgproc.hpp>
@@ -9,12 +10,29 @@
 
 namespace lvslam {
 
+namespace {
+
+// The first radius where r (1 + k1 r^2 + k2 r^4 + k3 r^6) stops increasing
+// (its derivative 1 + 3 k1 r^2 + 5 k2 r^4 + 7 k3 r^6 reaches 0), found on a
+// fine grid up to r = 20 (87 deg off the axis); infinite when there is none.
+double monotonicRadius(const RadTanDistortion& d) {
+  constexpr double kStep = 1e-3, kLimit = 20.0;
+  for (double r = kStep; r <= kLimit; r += kStep) {
+    const double r2 = r * r;
+    if (1.0 + r2 * (3.0 * d.k1 + r2 * (5.0 * d.k2 + r2 * 7.0 * d.k3)) <= 0.0) return r - kStep;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
 PinholeCamera::PinholeCamera(int width, int height, double fx, double fy, double cx, double cy,
                              RadTanDistortion distortion)
     : width_(width), height_(height), fx_(fx), fy_(fy), cx_(cx), cy_(cy), distortion_(distortion) {
   if (width <= 0 || height <= 0) throw Error("camera", "image size must be positive");
   if (!(fx > 0.0) || !(fy > 0.0) || !std::isfinite(cx) || !std::isfinite(cy))
     throw Error("camera", "intrinsics must be finite with fx, fy > 0");
+  max_radius_ = monotonicRadius(distortion);
 }
 
 Eigen::Matrix3d PinholeCamera::K() const {
@@ -57,7 +75,9 @@ std::optional<Eigen::Vector2d> PinholeCamera::projectUndistorted(const Eigen::Ve
 
 std::optional<Eigen::Vector2d> PinholeCamera::project(const Eigen::Vector3d& p) const {
   if (!(p.z() > 1e-9)) return std::nullopt;
-  const Eigen::Vector2d xy = distortNormalized(Eigen::Vector2d(p.x() / p.z(), p.y() / p.z()));
+  const Eigen::Vector2d xy_ideal(p.x() / p.z(), p.y() / p.z());
+  if (!(xy_ideal.norm() <= max_radius_)) return std::nullopt;
+  const Eigen::Vector2d xy = distortNormalized(xy_ideal);
   return Eigen::Vector2d(fx_ * xy.x() + cx_, fy_ * xy.y() + cy_);
 }
 

@@ -3,6 +3,7 @@
 // distortion. Pixel coordinates have their origin at the centre of the
 // top-left pixel, as in OpenCV.
 #include <array>
+#include <limits>
 #include <optional>
 
 #include <Eigen/Core>
@@ -31,8 +32,13 @@ class PinholeCamera {
   bool isDistorted() const { return !distortion_.isZero(); }
   Eigen::Matrix3d K() const;
 
-  // Point in the camera frame to a (distorted) pixel; none behind the camera.
+  // Point in the camera frame to a (distorted) pixel; none behind the
+  // camera, nor beyond the radius where the radial polynomial stops growing
+  // (past it the model folds points far outside the view back into the image).
   std::optional<Eigen::Vector2d> project(const Eigen::Vector3d& p_camera) const;
+  // That radius on the normalised image plane; infinite when the
+  // polynomial grows everywhere (no distortion, or k1..k3 all >= 0).
+  double maxProjectableRadius() const { return max_radius_; }
   // Same, for an ideal (undistorted) pinhole image.
   std::optional<Eigen::Vector2d> projectUndistorted(const Eigen::Vector3d& p_camera) const;
 
@@ -55,6 +61,7 @@ class PinholeCamera {
   int width_ = 0, height_ = 0;
   double fx_ = 0.0, fy_ = 0.0, cx_ = 0.0, cy_ = 0.0;
   RadTanDistortion distortion_;
+  double max_radius_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace lvslam

@@ -45,9 +45,8 @@ std::vector<std::string> familyNames() {
 }
 
 SimOptions familyOptions(const std::string& name) {
-  // No lens distortion in the corridor: with it the visual subsystem loses
-  // most of the motion along the axis, and the corridor is about the LiDAR's
-  // weakness, not the camera's (docs/simulator.md).
+  // No lens distortion in the corridor: the family's bytes as first
+  // generated (docs/simulator.md; the yard is the family with distortion).
   if (name == "corridor") return realistic(name, "corridor");
   if (name == "hall16" || name == "blur") {
     SimOptions o = realistic(name, "hall");
