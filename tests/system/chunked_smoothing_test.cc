@@ -46,7 +46,8 @@ Drive makeDrive(int count) {
   drive.nodes.push_back({truePose(0), true});
   for (int i = 1; i < count; ++i) {
     const Eigen::Isometry3d step = perturbed(truePose(i - 1).inverse() * truePose(i), odometry_m, odometry_rad, rng);
-    drive.factors.push_back({i - 1, i, step, isotropicCovariance(odometry_m, odometry_rad).inverse(), FactorSource::kLidar});
+    drive.factors.push_back(
+        {i - 1, i, step, isotropicCovariance(odometry_m, odometry_rad).inverse(), FactorSource::kLidar});
     drive.factors.push_back({0, i, perturbed(truePose(i), world_m, world_rad, rng),
                              isotropicCovariance(world_m, world_rad).inverse(), FactorSource::kVisual});
     drive.nodes.push_back({drive.nodes.back().T_world_camera * step, false});
@@ -81,8 +82,9 @@ TEST(ChunkedSmoothing, ALongDriveSmoothedInChunksIsTheWholeGraphsSolution) {
   std::vector<PoseNode> chunked = drive.nodes;
   smoothInChunks(chunked, drive.factors, config);
   for (std::size_t i = 0; i < whole.size(); ++i) {
-    correction = std::max(correction, (whole[i].T_world_camera.translation() - drive.nodes[i].T_world_camera.translation()).norm());
-    difference = std::max(difference, (whole[i].T_world_camera.translation() - chunked[i].T_world_camera.translation()).norm());
+    const Eigen::Vector3d t = whole[i].T_world_camera.translation();
+    correction = std::max(correction, (t - drive.nodes[i].T_world_camera.translation()).norm());
+    difference = std::max(difference, (t - chunked[i].T_world_camera.translation()).norm());
   }
   ASSERT_GT(correction, 0.05);  // the dead-reckoned drive is centimetres off
   EXPECT_LT(difference, 0.02 * correction);

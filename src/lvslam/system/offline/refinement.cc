@@ -9,10 +9,11 @@ namespace {
 
 // The estimator again, over the whole run, each LiDAR pose interpolated
 // between the sweeps around it; then its graph smoothed with every node
-// free but the first (the world), chunk by chunk (chunked_smoothing.h). Vision enters as tracked: its poses
-// placed on the map's final keyframes gain nothing here (the estimator
-// already weighs the map's drift) and lose where the final map is worse
-// than the tracking was (docs/benchmarks.md, "Offline refinement").
+// free but the first (the world), chunk by chunk (chunked_smoothing.h).
+// Vision enters as tracked: its poses placed on the map's final keyframes
+// gain nothing here (the estimator already weighs the map's drift) and
+// lose where the final map is worse than the tracking was
+// (docs/benchmarks.md, "Offline refinement").
 Trajectory smoothFusedGraph(const PipelineRecords& records, const SystemConfig& config,
                             const Eigen::Isometry3d& T_camera_lidar) {
   SystemConfig whole_run = config;
