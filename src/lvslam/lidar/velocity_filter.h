@@ -16,9 +16,10 @@ struct VelocityEstimate {
   Matrix6d covariance = Matrix6d::Identity() * 1e4;
 };
 
+// The platform's acceleration, 1 sigma (lidar.motion_accel, motion_angular_accel_deg).
 struct VelocityNoise {
-  double accel = 2.0;           // m/s^2, 1 sigma
-  double angular_accel = 1.57;  // rad/s^2, 1 sigma
+  double accel = 0.0;          // m/s^2
+  double angular_accel = 0.0;  // rad/s^2
 };
 
 // `measured`: the body velocity between the previous and this registered

@@ -1,7 +1,6 @@
 #include "lvslam/system/offline/chunked_smoothing.h"
 
 #include <algorithm>
-#include <map>
 
 #include "lvslam/core/error.h"
 
@@ -10,39 +9,21 @@ namespace lvslam::system {
 namespace {
 
 // Nodes [begin, end) free (unless fixed), every other node a factor of
-// theirs reaches held; solved, and the free ones written back.
+// theirs reaches held; a chunk that reaches no held node is held by its
+// first node, as a whole graph is.
 void solveChunk(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>& factors,
                 const std::vector<std::vector<int>>& factors_at, int begin, int end,
                 const PoseGraphSolveConfig& solve) {
-  std::map<int, int> local;
-  std::vector<PoseNode> chunk;
-  const auto localIndex = [&](int node) {
-    const auto [it, inserted] = local.try_emplace(node, static_cast<int>(chunk.size()));
-    if (inserted) {
-      const PoseNode& held = nodes[static_cast<std::size_t>(node)];
-      chunk.push_back({held.T_world_camera, held.fixed || node < begin || node >= end});
-    }
-    return it->second;
-  };
   std::vector<int> used;
-  for (int node = begin; node < end; ++node) {
-    localIndex(node);
+  for (int node = begin; node < end; ++node)
     for (const int f : factors_at[static_cast<std::size_t>(node)]) used.push_back(f);
-  }
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
-  std::vector<PoseFactor> local_factors;
-  local_factors.reserve(used.size());
-  for (const int f : used) {
-    PoseFactor factor = factors[static_cast<std::size_t>(f)];
-    factor.from = localIndex(factor.from);
-    factor.to = localIndex(factor.to);
-    local_factors.push_back(std::move(factor));
-  }
-  // A chunk that reaches no held node is held by its first node, as a whole graph is.
-  if (!solvePoseGraph(chunk, local_factors, solve)) return;
-  for (const auto& [node, index] : local)
-    if (node >= begin && node < end) nodes[static_cast<std::size_t>(node)] = chunk[static_cast<std::size_t>(index)];
+  std::vector<const PoseFactor*> chunk;
+  chunk.reserve(used.size());
+  for (const int f : used) chunk.push_back(&factors[static_cast<std::size_t>(f)]);
+  solveSubgraph(begin, end, chunk, [&nodes](int id) -> PoseNode& { return nodes[static_cast<std::size_t>(id)]; },
+                solve);
 }
 
 }  // namespace

@@ -216,31 +216,16 @@ std::optional<Matrix6d> FusedEstimator::solveWindow(int newest, int of) {
   const double start = timeOf(newest) - config_.window_s;
   int first = newest;
   while (first > first_node_ && timeOf(first - 1) >= start) --first;
-  // Local graph: window nodes free, every other node a factor reaches fixed.
-  std::map<int, int> local;
-  std::vector<PoseNode> nodes;
-  std::vector<PoseFactor> factors;
-  const auto localIndex = [&](int node) {
-    const auto [it, inserted] = local.try_emplace(node, static_cast<int>(nodes.size()));
-    const PoseNode& held = nodeAt(node);
-    if (inserted) nodes.push_back({held.T_world_camera, node < first || held.fixed});
-    return it->second;
-  };
-  for (int node = first; node <= newest; ++node) localIndex(node);
+  // The window's nodes free, every older node its factors reach held at its
+  // last estimate.
+  std::vector<const PoseFactor*> factors;
   for (int node = first; node <= newest; ++node)
-    for (const int f : factorsTo(node)) {
-      PoseFactor factor = factorAt(f);
-      factor.from = localIndex(factor.from);
-      factor.to = localIndex(factor.to);
-      factors.push_back(std::move(factor));
-    }
-  // Held by the node before the window (its last estimate) when it is reached.
-  PoseGraphSolveConfig solve{config_.huber_delta, config_.max_iterations, true};
-  NodeCovariance covariance;
-  if (const auto found = local.find(of); found != local.end()) covariance.node = found->second;
-  if (!solvePoseGraph(nodes, factors, solve, &covariance)) return std::nullopt;
-  for (const auto& [node, index] : local)
-    if (node >= first) nodeAt(node) = nodes[static_cast<std::size_t>(index)];
+    for (const int f : factorsTo(node)) factors.push_back(&factorAt(f));
+  const PoseGraphSolveConfig solve{config_.huber_delta, config_.max_iterations, true};
+  NodeCovariance covariance{of, std::nullopt};
+  if (!solveSubgraph(first, newest + 1, factors, [this](int id) -> PoseNode& { return nodeAt(id); }, solve,
+                     &covariance))
+    return std::nullopt;
   return covariance.covariance;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <memory>
 
 #include <Eigen/Eigenvalues>
@@ -170,6 +171,38 @@ bool solvePoseGraph(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>&
     if (!nodes[i].fixed) nodes[i].T_world_camera = fromBlock(blocks[i]);
   if (covariance && covariance->node >= 0 && static_cast<std::size_t>(covariance->node) < blocks.size())
     covariance->covariance = marginalCovariance(problem, blocks, static_cast<std::size_t>(covariance->node));
+  return true;
+}
+
+bool solveSubgraph(int begin, int end, const std::vector<const PoseFactor*>& factors,
+                   const std::function<PoseNode&(int)>& node, const PoseGraphSolveConfig& config,
+                   NodeCovariance* covariance) {
+  std::map<int, int> local;  // id in the larger graph -> index here
+  std::vector<PoseNode> nodes;
+  const auto localIndex = [&](int id) {
+    const auto [it, inserted] = local.try_emplace(id, static_cast<int>(nodes.size()));
+    if (inserted) {
+      const PoseNode& held = node(id);
+      nodes.push_back({held.T_world_camera, held.fixed || id < begin || id >= end});
+    }
+    return it->second;
+  };
+  for (int id = begin; id < end; ++id) localIndex(id);
+  std::vector<PoseFactor> local_factors;
+  local_factors.reserve(factors.size());
+  for (const PoseFactor* f : factors) {
+    PoseFactor factor = *f;
+    factor.from = localIndex(factor.from);
+    factor.to = localIndex(factor.to);
+    local_factors.push_back(std::move(factor));
+  }
+  NodeCovariance local_covariance;
+  if (covariance)
+    if (const auto found = local.find(covariance->node); found != local.end()) local_covariance.node = found->second;
+  if (!solvePoseGraph(nodes, local_factors, config, covariance ? &local_covariance : nullptr)) return false;
+  for (const auto& [id, index] : local)
+    if (id >= begin && id < end) node(id) = nodes[static_cast<std::size_t>(index)];
+  if (covariance) covariance->covariance = local_covariance.covariance;
   return true;
 }
 

@@ -3,6 +3,7 @@
 // information matrix (possibly singular: a direction a subsystem does not
 // observe gets none), solved by Ceres with a Huber kernel. The online
 // estimator solves a window of it per frame, the offline refinement all of it.
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -56,5 +57,15 @@ struct NodeCovariance {
 // With `covariance`, also that node's covariance at the solution.
 bool solvePoseGraph(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>& factors,
                     const PoseGraphSolveConfig& config, NodeCovariance* covariance = nullptr);
+
+// A part of a larger graph whose nodes `node(id)` gives: nodes [begin, end)
+// free (unless fixed), every other node the factors reach held at its
+// current estimate. The factors are solved as one graph (solvePoseGraph,
+// the free nodes first, in id order) and the free nodes written back; with
+// `covariance`, its node is an id of the larger graph. Returns false (nodes
+// unchanged) when the solver failed.
+bool solveSubgraph(int begin, int end, const std::vector<const PoseFactor*>& factors,
+                   const std::function<PoseNode&(int)>& node, const PoseGraphSolveConfig& config,
+                   NodeCovariance* covariance = nullptr);
 
 }  // namespace lvslam::system

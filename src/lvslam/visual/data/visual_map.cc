@@ -34,6 +34,13 @@ Landmark& findById(const std::vector<Landmark*>& by_id, int id, const char* what
   return *by_id[static_cast<size_t>(id)];
 }
 
+// Drops the landmark; its id keeps its slot, null, so it is never reused.
+template <typename Landmark>
+void erase(std::map<int, Landmark>& landmarks, std::vector<Landmark*>& by_id, int id) {
+  landmarks.erase(id);
+  by_id[static_cast<size_t>(id)] = nullptr;
+}
+
 // Pointers to every landmark by id, into the map's nodes; `count` ids in
 // all (removed ones null).
 template <typename Landmark>
@@ -151,22 +158,19 @@ void VisualMap::replacePoint(int from, int into) {
                                   [&](const Observation& t) { return t.keyframe == o.keyframe; });
     if (!seen) addPointObservation(into, o.keyframe, o.index);
   }
-  points_.erase(from);
-  point_by_id_[static_cast<size_t>(from)] = nullptr;
+  erase(points_, point_by_id_, from);
 }
 
 void VisualMap::removePoint(int point) {
   PointLandmark& p = findById(point_by_id_, point, "point");
   while (!p.observations.empty()) removePointObservation(point, p.observations.back().keyframe);
-  points_.erase(point);
-  point_by_id_[static_cast<size_t>(point)] = nullptr;
+  erase(points_, point_by_id_, point);
 }
 
 void VisualMap::removeLine(int line) {
   LineLandmark& l = findById(line_by_id_, line, "line");
   while (!l.observations.empty()) removeLineObservation(line, l.observations.back().keyframe);
-  lines_.erase(line);
-  line_by_id_[static_cast<size_t>(line)] = nullptr;
+  erase(lines_, line_by_id_, line);
 }
 
 bool VisualMap::hasPoint(int id) const { return alive(point_by_id_, id); }

@@ -66,8 +66,7 @@ void LocalMapper::trimLines(VisualMap& map, const std::vector<int>& window) cons
     for (const int l : map.keyframe(kf).line_landmark)
       if (l >= 0) lines.insert(l);
   }
-  for (const int id : lines) {
-    if (!map.hasLine(id)) continue;
+  for (const int id : lines) {  // all alive: keyframes observe no removed landmark
     LineLandmark& line = map.line(id);
     std::vector<SegmentObservation> observations;
     for (const Observation& o : line.observations) {
