@@ -10,10 +10,14 @@
 
 namespace lvslam::fusion {
 
-// Per pixel the mean depth of the samples within radius_px that lie within
-// 5 % of the nearest one; NaN where fewer than two such samples exist (and
-// everywhere for a radius that is not positive and finite). width x height
-// is the image the samples and pixels are in.
+// Per pixel the depth of the nearest surface among the samples within
+// radius_px, read at the pixel through a local plane (inverse depth affine in
+// the image point), so that a slanted surface, a wall or the floor at a
+// grazing angle, is not read at its near edge: the farthest samples are
+// dropped until the rest lie on one plane within 5 % of their depths. NaN
+// where fewer than two samples remain (and everywhere for a radius that is
+// not positive and finite). width x height is the image the samples and
+// pixels are in.
 std::vector<double> surfaceDepths(const std::vector<visual::PixelDepth>& samples,
                                   const std::vector<Eigen::Vector2d>& pixels, double radius_px, int width,
                                   int height);
