@@ -9,15 +9,43 @@ VisualHealth healthy(double t) {
   return {t, VisualState::kTracking, 300, 40, 0.9, 120.0, 50.0};
 }
 
-TEST(DetectionModule, StartsOnLidarAndTrustsVisionAfterAHealthyStreak) {
+VisualHealth initializing(double t) {
+  VisualHealth h = healthy(t);
+  h.state = VisualState::kInitializing;
+  h.tracked_points = 0;
+  h.tracked_lines = 0;
+  h.inlier_ratio = 0.0;
+  return h;
+}
+
+// Waiting for the first map is not a failure: its first healthy frame is
+// admitted at once.
+TEST(DetectionModule, StartsOnLidarAndAdmitsTheFirstMapAtItsFirstHealthyFrame) {
   DetectionConfig config;
   config.frames_to_recover = 5;
   DetectionModule d(config);
-  for (int i = 0; i < 4; ++i) EXPECT_EQ(d.update(healthy(i)), OutputSource::kLidar) << i;
-  EXPECT_EQ(d.update(healthy(4)), OutputSource::kVisual);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(d.update(initializing(i)), OutputSource::kLidar) << i;
+  EXPECT_NE(d.lastProblem().find("initializing"), std::string::npos);
+  EXPECT_EQ(d.update(healthy(3)), OutputSource::kVisual);
   ASSERT_EQ(d.switches().size(), 1u);
-  EXPECT_EQ(d.switches()[0].t, 4.0);
+  EXPECT_EQ(d.switches()[0].t, 3.0);
   EXPECT_EQ(d.switches()[0].to, OutputSource::kVisual);
+}
+
+// A failure before the first admission (here a dark start) asks for the
+// streak like any other.
+TEST(DetectionModule, AFailureBeforeTheFirstAdmissionNeedsAHealthyStreak) {
+  DetectionConfig config;
+  config.frames_to_recover = 5;
+  DetectionModule d(config);
+  VisualHealth dark = initializing(0);
+  dark.brightness = 3.0;
+  EXPECT_EQ(d.update(dark), OutputSource::kLidar);
+  EXPECT_EQ(d.update(initializing(1)), OutputSource::kLidar);
+  for (int i = 2; i < 6; ++i) EXPECT_EQ(d.update(healthy(i)), OutputSource::kLidar) << i;
+  EXPECT_EQ(d.update(healthy(6)), OutputSource::kVisual);
+  ASSERT_EQ(d.switches().size(), 1u);
+  EXPECT_EQ(d.switches()[0].t, 6.0);
 }
 
 TEST(DetectionModule, BlackoutSwitchesToLidarAtOnceWithTheReason) {

@@ -181,7 +181,7 @@ TEST_F(VisualSlamBadInputTest, SaturatedFramesAreLostThenRelocalisedIntoTheOldMa
 }
 
 // Lost for longer than config.relocalize_frames: the first good frame starts
-// map 1, which initialises metrically from the depth hints.
+// map 1 metrically from its depth hints.
 TEST_F(VisualSlamBadInputTest, SaturatedFramesPastTheRelocalisationWindowStartANewMetricMap) {
   VisualSlamConfig config;
   config.relocalize_frames = 2;
@@ -189,7 +189,9 @@ TEST_F(VisualSlamBadInputTest, SaturatedFramesPastTheRelocalisationWindowStartAN
   expectLostAndMapKept(r);
   for (const VisualFrameResult& result : r.spoilt) EXPECT_GT(result.brightness, config.usability.max_brightness);
   ASSERT_FALSE(r.after.empty());
-  EXPECT_EQ(r.after.front().state, TrackingState::kInitializing);  // the old map is given up at once
+  // The old map is given up at once; the frame's depths start the new one.
+  EXPECT_EQ(r.after.front().state, TrackingState::kTracking);
+  EXPECT_TRUE(r.after.front().pose_valid);
   EXPECT_EQ(r.after.front().map_id, 1);
   expectNewMetricMap(r.after, r.after_estimate, r.after_truth, 1);
 }

@@ -1,7 +1,7 @@
 #include "lvslam/fusion/fusion_framework.h"
 
 #include "lvslam/fusion/sphere_index.h"
-#include "lvslam/fusion/surface_depth.h"
+#include "lvslam/visual/geometry/surface_depth.h"
 
 namespace lvslam::fusion {
 
@@ -53,7 +53,7 @@ std::vector<double> FusionFramework::pointDepths(const Eigen::Isometry3d& T_worl
     const auto px = camera_.project(f.p_camera);
     if (px && camera_.inImage(*px)) samples.push_back({*px, f.p_camera.z()});
   }
-  return surfaceDepths(samples, pixels, max_pixel_distance, camera_.width(), camera_.height());
+  return visual::surfaceDepths(samples, pixels, max_pixel_distance, camera_.width(), camera_.height());
 }
 
 }  // namespace lvslam::fusion

@@ -14,7 +14,7 @@
 
 #include "lvslam/core/calibration.h"
 #include "lvslam/core/lidar_scan.h"
-#include "lvslam/visual/tracking/map_initialization.h"
+#include "lvslam/visual/geometry/surface_depth.h"
 
 namespace lvslam::system {
 

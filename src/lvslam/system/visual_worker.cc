@@ -3,7 +3,7 @@
 #include <optional>
 
 #include "lvslam/core/error.h"
-#include "lvslam/fusion/surface_depth.h"
+#include "lvslam/visual/geometry/surface_depth.h"
 #include "lvslam/system/lidar_depth_hints.h"
 #include "lvslam/system/stopwatch.h"
 
@@ -35,6 +35,7 @@ std::optional<CameraMotion> motionFromPrevious(const std::vector<VisualFrameReco
 visual::VisualSlamConfig visualSlamConfig(const SystemConfig& config, bool depths_from_scans) {
   visual::VisualSlamConfig c = config.visual;
   c.triangulation.create_depth_points = depths_from_scans;
+  c.depth_radius_px = config.keypoint_depth_radius_px;
   return c;
 }
 
@@ -84,7 +85,7 @@ std::vector<Eigen::Vector2d> VisualWorker::track(visual::ExtractedImage image, d
     const double max_dt = motion ? keypoint_depth_max_dt_ : hint_max_dt_;
     const PinholeCamera& camera = *calibration_.camera;
     const std::vector<double> depths =
-        fusion::surfaceDepths(lidarDepthHints(recent_scans_, record.t, calibration_, max_dt, motion),
+        visual::surfaceDepths(lidarDepthHints(recent_scans_, record.t, calibration_, max_dt, motion),
                               slam_.keypointPixels(), keypoint_depth_radius_px_, camera.width(), camera.height());
     record.keypoint_depths = depthCount(depths);
     slam_.setKeypointDepths(depths);

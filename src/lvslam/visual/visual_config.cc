@@ -42,8 +42,8 @@ void addTrackingKeys(ConfigKeys& keys, VisualSlamConfig& c) {
   keys.add("initializer.window_px", c.init_window_px)
       .add("initializer.min_matches", c.min_init_matches)
       .add("initializer.max_frames", c.max_init_frames)
-      .add("initializer.hint_radius_px", c.hint_radius_px)
       .add("initializer.max_unhinted_references", c.max_unhinted_references)
+      .add("initializer.min_depth_share", c.min_depth_share)
       .add("initializer.sigma_px", v.initializer.sigma_px)
       .add("initializer.homography_ratio", v.initializer.homography_ratio)
       .add("initializer.min_parallax_deg", v.initializer.min_parallax_deg)
@@ -143,8 +143,8 @@ void validateTracking(const VisualSlamConfig& c, const ValueCheck& check) {
   check(c.init_window_px > 0.0, "initializer.window_px", "must be positive");
   check(c.min_init_matches >= 8, "initializer.min_matches", "must be at least 8");
   check(c.max_init_frames >= 1, "initializer.max_frames", "must be at least 1");
-  check(c.hint_radius_px > 0.0, "initializer.hint_radius_px", "must be positive");
   check(c.max_unhinted_references >= 0, "initializer.max_unhinted_references", "must not be negative");
+  check(c.min_depth_share >= 0.0 && c.min_depth_share <= 1.0, "initializer.min_depth_share", "must be in [0, 1]");
   check(v.point_matching.ratio > 0.0 && v.point_matching.ratio <= 1.0, "point_matching.ratio", "must be in (0, 1]");
   check(v.line_matching.ratio > 0.0 && v.line_matching.ratio <= 1.0, "line_matching.ratio", "must be in (0, 1]");
   check(c.search_radius_px > 0.0, "tracking.search_radius_px", "must be positive");

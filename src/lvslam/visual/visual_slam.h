@@ -15,8 +15,8 @@
 #include "lvslam/core/camera.h"
 #include "lvslam/core/image_frame.h"
 #include "lvslam/visual/data/visual_map.h"
+#include "lvslam/visual/geometry/surface_depth.h"
 #include "lvslam/visual/tracking/extracted_image.h"
-#include "lvslam/visual/tracking/map_initialization.h"
 #include "lvslam/visual/tracking/visual_frame_result.h"
 #include "lvslam/visual/tracking/visual_slam_config.h"
 
@@ -34,8 +34,9 @@ class VisualSlam {
   // The same for an image extracted elsewhere (extractImage, same settings).
   VisualFrameResult track(ExtractedImage image);
 
-  // Fusion face. Depth hints (raw pixels) for the next track(), used if that
-  // frame becomes a map's first view; calling it at all marks the frame as
+  // Fusion face. Depth hints (raw pixels) for the next track(): a frame
+  // whose keypoints read enough depths from them starts a map alone, else
+  // they make a two-view start metric; calling it at all marks the frame as
   // one that needs hints (config.max_unhinted_references).
   void setDepthHints(std::vector<PixelDepth> hints);
   bool needsDepthHints() const;

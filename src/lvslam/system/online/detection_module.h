@@ -4,7 +4,7 @@
 // state, tracked features, inliers, image brightness and contrast, metric
 // scale) and decides whether its estimate may enter the output. It drops
 // vision at once when it fails and admits it again only after it has been
-// healthy for a while. Whether vision is *better* than the LiDAR is never
+// healthy for a while (the first map, before any failure, at once). Whether vision is *better* than the LiDAR is never
 // decided here: the online estimator weighs both by their own uncertainty.
 #include <optional>
 #include <string>
@@ -31,7 +31,7 @@ struct DetectionConfig {
   double min_inlier_ratio = 0.5;
   double min_brightness = 20.0, max_brightness = 245.0;
   double min_contrast = 8.0;
-  int frames_to_recover = 10;           // consecutive healthy frames before vision is believed again
+  int frames_to_recover = 10;           // consecutive healthy frames before vision is believed again after a failure
   // Back in a visual map after the LiDAR, the output rejoins the map's first
   // anchor by at most this much per frame (system/output_trajectory.h).
   double rejoin_step_m = 0.002;
@@ -64,6 +64,7 @@ class DetectionModule {
   DetectionConfig config_;
   OutputSource source_ = OutputSource::kLidar;  // until vision has proven itself
   int healthy_streak_ = 0;
+  bool failed_ = false;  // unhealthy for a reason other than waiting for the first map
   std::string last_problem_;
   std::vector<SwitchEvent> switches_;
 };

@@ -23,8 +23,8 @@ struct PointTriangulationConfig {
   double min_baseline_ratio = 0.01;  // baseline / median depth (ORB-SLAM)
   // Points straight from LiDAR keypoint depths (createDepthPoints): at most
   // this many per keyframe, nearest first (ORB-SLAM2's RGB-D close points).
-  // Off by default: they need accurate depths. lvslam run turns them on in
-  // visual mode, whose keyframe depths are raw deskewed LiDAR points.
+  // Off by default: they need accurate depths. lvslam run turns them on
+  // when keyframe depths are raw deskewed LiDAR points.
   bool create_depth_points = false;
   int max_depth_points = 100;
 };

@@ -1,40 +1,11 @@
 #include "lvslam/visual/tracking/map_initialization.h"
 
+#include <algorithm>
 #include <cmath>
 
-#include "lvslam/visual/match/feature_grid.h"
+#include "lvslam/visual/module/point_triangulation.h"
 
 namespace lvslam::visual {
-
-std::vector<DepthHint> depthHintsForKeypoints(const FeatureFrame& frame, const std::vector<PixelDepth>& hints,
-                                              double radius_px) {
-  std::vector<DepthHint> out;
-  std::vector<Eigen::Vector2d> pixels;
-  std::vector<double> depths;
-  for (const PixelDepth& h : hints) {
-    if (!h.pixel.allFinite() || !std::isfinite(h.depth) || !(h.depth > 0.0)) continue;
-    pixels.push_back(h.pixel);
-    depths.push_back(h.depth);
-  }
-  if (pixels.empty()) return out;
-  const FeatureGrid grid(pixels, frame.width, frame.height, 16);
-  std::vector<int> near;
-  for (size_t i = 0; i < frame.keypoints.size(); ++i) {
-    const Eigen::Vector2d kp(frame.keypoints[i].pt.x, frame.keypoints[i].pt.y);
-    grid.query(kp, radius_px, near);
-    int best = -1;
-    double best_d2 = radius_px * radius_px;
-    for (const int j : near) {
-      const double d2 = (pixels[j] - kp).squaredNorm();
-      if (d2 <= best_d2) {
-        best_d2 = d2;
-        best = j;
-      }
-    }
-    if (best >= 0) out.push_back({static_cast<int>(i), depths[best]});
-  }
-  return out;
-}
 
 namespace {
 
@@ -45,6 +16,24 @@ int countGoodPoints(const VisualMap& map, const std::vector<int>& ids) {
 }
 
 }  // namespace
+
+std::optional<InitialMap> buildDepthMap(VisualMap& map, const InitializationView& view,
+                                        const std::vector<double>& depths, const PinholeIntrinsics& intrinsics,
+                                        int min_points) {
+  const auto with_depth = std::count_if(depths.begin(), depths.end(), [](double z) { return std::isfinite(z) && z > 0.0; });
+  if (depths.size() != view.features->points.size() || with_depth < min_points) return std::nullopt;
+  InitialMap out;
+  Keyframe k;
+  k.timestamp = view.timestamp;
+  k.features = *view.features;
+  out.keyframe1 = map.addKeyframe(std::move(k));
+  map.setKeypointDepths(out.keyframe1, depths);  // bundle adjustment keeps them as depth terms
+  PointTriangulationConfig every_depth;
+  every_depth.create_depth_points = true;
+  every_depth.max_depth_points = static_cast<int>(with_depth);
+  out.points = createDepthPoints(map, out.keyframe1, intrinsics, every_depth);
+  return out;
+}
 
 std::optional<InitialMap> buildInitialMap(VisualMap& map, const InitializationView& view1,
                                           const InitializationView& view2, const TwoViewInitialization& init,

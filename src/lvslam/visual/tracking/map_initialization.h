@@ -1,8 +1,8 @@
 #pragma once
-// The first two keyframes of a map from an accepted two-view initialisation:
-// triangulated points, lines matched and triangulated between the two views,
-// and a BA with the first keyframe fixed. Plus the conversion of pixel depth
-// hints into the initializer's per-keypoint hints.
+// A map's first keyframes: from one view whose keypoints have metric depth
+// (LiDAR), or from an accepted two-view initialisation (triangulated points,
+// lines matched and triangulated between the two views, and a BA with the
+// first keyframe fixed).
 #include <optional>
 #include <vector>
 
@@ -15,17 +15,6 @@
 
 namespace lvslam::visual {
 
-// A depth hint: metric depth z in the camera frame of a pixel of the raw
-// (distorted) image, e.g. a LiDAR point projected into it.
-struct PixelDepth {
-  Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
-  double depth = 0.0;
-};
-
-// Per keypoint the nearest hint within radius_px (raw image pixels).
-std::vector<DepthHint> depthHintsForKeypoints(const FeatureFrame& frame, const std::vector<PixelDepth>& hints,
-                                              double radius_px);
-
 // One frame of the initialisation pair.
 struct InitializationView {
   double timestamp = 0.0;
@@ -36,6 +25,17 @@ struct InitialMap {
   int keyframe1 = -1, keyframe2 = -1;
   std::vector<int> points, lines;
 };
+
+// One view with depths per keypoint (non-finite: none), as an RGB-D SLAM
+// starts (ORB-SLAM2's RGB-D initialisation): the view is the world frame and
+// every keypoint with a depth becomes a point (not only the nearest, as on
+// later keyframes: they would crowd on one near object, and the map has
+// nothing else yet). keyframe2 stays -1, lines come with the next keyframe.
+// None (and the map left untouched) when fewer than `min_points` keypoints
+// have a depth.
+std::optional<InitialMap> buildDepthMap(VisualMap& map, const InitializationView& view,
+                                        const std::vector<double>& depths, const PinholeIntrinsics& intrinsics,
+                                        int min_points);
 
 // None (and the map left empty) when fewer than `min_points` points survive the BA.
 std::optional<InitialMap> buildInitialMap(VisualMap& map, const InitializationView& view1,

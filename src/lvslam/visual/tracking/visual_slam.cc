@@ -1,16 +1,19 @@
 #include "lvslam/visual/visual_slam.h"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
 #include "lvslam/visual/feature/feature_extractor.h"
+#include "lvslam/visual/geometry/surface_depth.h"
 #include "lvslam/visual/module/local_mapper.h"
 #include "lvslam/visual/optimize/solver_logging.h"
 #include "lvslam/visual/tracking/frame_tracker.h"
 #include "lvslam/visual/tracking/keyframe_policy.h"
 #include "lvslam/visual/tracking/local_keyframes.h"
+#include "lvslam/visual/tracking/map_initialization.h"
 #include "lvslam/visual/tracking/motion_model.h"
 #include "lvslam/visual/tracking/relocalization.h"
 
@@ -103,7 +106,7 @@ struct VisualSlam::Impl {
   std::optional<TrackedFrame> reference;
   double reference_time = 0.0;
   int reference_frame = 0;
-  std::vector<DepthHint> reference_hints;
+  std::vector<double> reference_depths;  // per keypoint of the reference, NaN: none
   int skipped_references = 0;
   bool metric = false;
   // Tracking.
@@ -121,10 +124,13 @@ struct VisualSlam::Impl {
   std::optional<Eigen::Isometry3d> map_correction;  // of the current frame (VisualFrameResult::T_new_old)
 
   VisualFrameResult track(ExtractedImage image, std::vector<PixelDepth> hints);
-  void initialize(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
-  void setReference(const std::vector<PixelDepth>& hints);
+  std::vector<double> keypointDepths(const std::vector<PixelDepth>& hints) const;
+  void initialize(const std::vector<double>& depths, VisualFrameResult& result);
+  bool initializeFromDepths(const std::vector<double>& depths, VisualFrameResult& result);
+  void setReference(const std::vector<double>& depths);
+  void startTracking(const Keyframe& keyframe, const InitialMap& built);
   bool trackFrame(VisualFrameResult& result);
-  void recoverOrRestart(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
+  void recoverOrRestart(const std::vector<double>& depths, VisualFrameResult& result);
   bool relocalize(VisualFrameResult& result);
   void loseTracking();
   void newMap();
@@ -183,11 +189,11 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   } else {
     current.grid = FeatureGrid(current.features.points, current.features.width, current.features.height);
     if (state == TrackingState::kInitializing) {
-      initialize(hints, result);
+      initialize(keypointDepths(hints), result);
     } else if (state == TrackingState::kTracking) {
       if (!trackFrame(result)) loseTracking();
     } else {
-      recoverOrRestart(hints, result);
+      recoverOrRestart(keypointDepths(hints), result);
     }
   }
   result.state = state;
@@ -213,11 +219,21 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   return result;
 }
 
-void VisualSlam::Impl::setReference(const std::vector<PixelDepth>& hints) {
-  reference_hints = depthHintsForKeypoints(current.features, hints, config.hint_radius_px);
+// The depth of the surface under each keypoint of the current frame (NaN:
+// none), read from the hints around it.
+std::vector<double> VisualSlam::Impl::keypointDepths(const std::vector<PixelDepth>& hints) const {
+  std::vector<Eigen::Vector2d> pixels;
+  pixels.reserve(current.features.keypoints.size());
+  for (const cv::KeyPoint& k : current.features.keypoints) pixels.emplace_back(k.pt.x, k.pt.y);
+  return surfaceDepths(hints, pixels, config.depth_radius_px, current.features.width, current.features.height);
+}
+
+void VisualSlam::Impl::setReference(const std::vector<double>& depths) {
+  reference_depths = depths;
+  const auto hinted = std::count_if(depths.begin(), depths.end(), [](double z) { return std::isfinite(z); });
   // Hints are given but too few reach keypoints (e.g. the LiDAR sweep was
   // elsewhere at this image's time): a later frame is a better metric anchor.
-  const bool unhinted = static_cast<int>(reference_hints.size()) < config.visual.initializer.min_depth_hints;
+  const bool unhinted = hinted < config.visual.initializer.min_depth_hints;
   if (hints_given && unhinted && skipped_references < config.max_unhinted_references) {
     ++skipped_references;
     reference.reset();
@@ -229,30 +245,31 @@ void VisualSlam::Impl::setReference(const std::vector<PixelDepth>& hints) {
   reference_frame = frame_index;
 }
 
-void VisualSlam::Impl::initialize(const std::vector<PixelDepth>& hints, VisualFrameResult& result) {
-  if (!reference || frame_index - reference_frame > config.max_init_frames) return setReference(hints);
+// A frame whose keypoints have LiDAR depth starts the map alone; without
+// (no LiDAR, or the sweep elsewhere) two views with enough parallax do.
+void VisualSlam::Impl::initialize(const std::vector<double>& depths, VisualFrameResult& result) {
+  if (initializeFromDepths(depths, result)) return;
+  if (!reference || frame_index - reference_frame > config.max_init_frames) return setReference(depths);
   const std::vector<PointMatch> matches = matchInWindow(reference->features, current.features, current.grid,
                                                         config.init_window_px, config.visual.point_matching);
-  if (static_cast<int>(matches.size()) < config.min_init_matches) return setReference(hints);
+  if (static_cast<int>(matches.size()) < config.min_init_matches) return setReference(depths);
   std::vector<TwoViewMatch> pairs;
-  for (const PointMatch& m : matches) pairs.push_back({m.index1, m.index2});
-  initializer.setDepthHints(reference_hints);
+  std::vector<DepthHint> hints;
+  for (const PointMatch& m : matches) {
+    pairs.push_back({m.index1, m.index2});
+    if (std::isfinite(reference_depths[m.index1])) hints.push_back({m.index1, reference_depths[m.index1]});
+  }
+  initializer.setDepthHints(hints);
   const auto init = initializer.initialize(reference->features.points, current.features.points, pairs);
   if (!init) return;
   const auto built = buildInitialMap(map, {reference_time, &reference->features},
                                      {current.features.timestamp, &current.features}, *init, pairs, K, config.visual,
                                      config.visual.initializer.min_triangulated);
-  if (!built) return setReference(hints);
+  if (!built) return setReference(depths);
   metric = init->metric;
-  mapper.addRecentPoints(built->points, built->keyframe2);
   mapper.addRecentLines(built->lines, built->keyframe2);
   const Keyframe& k2 = map.keyframe(built->keyframe2);
-  current.T_camera_world = k2.T_camera_world;
-  current.point_landmark = k2.point_landmark;
-  current.line_landmark = k2.line_landmark;
-  current.point_inliers = static_cast<int>(std::count_if(k2.point_landmark.begin(), k2.point_landmark.end(), [](int id) { return id >= 0; }));
-  current.line_inliers = static_cast<int>(std::count_if(k2.line_landmark.begin(), k2.line_landmark.end(), [](int id) { return id >= 0; }));
-  current_has_pose = true;
+  startTracking(k2, *built);
   current_keyframe = built->keyframe2;
   result.initial_reference = StampedPose{reference_time, map.keyframe(built->keyframe1).T_camera_world.inverse()};
   result.initial_reference_keyframe = built->keyframe1;
@@ -260,10 +277,38 @@ void VisualSlam::Impl::initialize(const std::vector<PixelDepth>& hints, VisualFr
   // Constant velocity per frame: the initial motion spread over its frames.
   const int frames = std::max(1, frame_index - reference_frame);
   motion = {expSE3(logSE3(k2.T_camera_world) / frames), (current.features.timestamp - reference_time) / frames};
+}
+
+bool VisualSlam::Impl::initializeFromDepths(const std::vector<double>& depths, VisualFrameResult& result) {
+  const int min_points = std::max(config.visual.initializer.min_triangulated,
+                                  static_cast<int>(std::ceil(config.min_depth_share * depths.size())));
+  const auto built = buildDepthMap(map, {current.features.timestamp, &current.features}, depths, K, min_points);
+  if (!built) return false;
+  metric = true;
+  startTracking(map.keyframe(built->keyframe1), *built);
+  current_keyframe = built->keyframe1;
+  result.inlier_ratio = 1.0;  // every point is seen where it was made
+  motion = ConstantVelocity{};
+  return true;
+}
+
+// The current frame is the map's newest keyframe: tracking goes on from it.
+void VisualSlam::Impl::startTracking(const Keyframe& keyframe, const InitialMap& built) {
+  const int id = built.keyframe2 >= 0 ? built.keyframe2 : built.keyframe1;
+  mapper.addRecentPoints(built.points, id);
+  const auto observed = [](const std::vector<int>& ids) {
+    return static_cast<int>(std::count_if(ids.begin(), ids.end(), [](int i) { return i >= 0; }));
+  };
+  current.T_camera_world = keyframe.T_camera_world;
+  current.point_landmark = keyframe.point_landmark;
+  current.line_landmark = keyframe.line_landmark;
+  current.point_inliers = observed(keyframe.point_landmark);
+  current.line_inliers = observed(keyframe.line_landmark);
+  current_has_pose = true;
   last_time = current.features.timestamp;
-  T_last = k2.T_camera_world;
-  last_points = observedLandmarks(k2.point_landmark);
-  reference_keyframe = built->keyframe2;
+  T_last = keyframe.T_camera_world;
+  last_points = observedLandmarks(keyframe.point_landmark);
+  reference_keyframe = id;
   last_keyframe_frame = frame_index;
   reference.reset();
   state = TrackingState::kTracking;
@@ -387,13 +432,13 @@ bool VisualSlam::Impl::relocalize(VisualFrameResult& result) {
   return true;
 }
 
-void VisualSlam::Impl::recoverOrRestart(const std::vector<PixelDepth>& hints, VisualFrameResult& result) {
+void VisualSlam::Impl::recoverOrRestart(const std::vector<double>& depths, VisualFrameResult& result) {
   if (lost_frames <= config.relocalize_frames && map.hasKeyframe(reference_keyframe)) {
     if (!relocalize(result)) ++lost_frames;
     return;
   }
   newMap();
-  initialize(hints, result);
+  initialize(depths, result);
 }
 
 VisualSlam::VisualSlam(const VisualSlamConfig& config, const PinholeCamera& camera)

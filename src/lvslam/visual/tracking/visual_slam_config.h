@@ -20,7 +20,12 @@ struct VisualSlamConfig {
   double init_window_px = 100.0;
   int min_init_matches = 100;
   int max_init_frames = 30;     // a reference older than this is replaced
-  double hint_radius_px = 3.0;  // a depth hint serves keypoints this close
+  // A keypoint's depth is read from the hints this close (surfaceDepths).
+  double depth_radius_px = 8.0;
+  // A frame whose hints give this share of its keypoints a depth starts a map
+  // alone (ORB-SLAM2's RGB-D start asks 500 of its 1000 keypoints; a LiDAR
+  // reaches fewer): fewer, and the sweep was elsewhere at its time.
+  double min_depth_share = 0.25;
   // A frame given hints of which too few reach keypoints is passed over as
   // the first view, at most this many times in a row.
   int max_unhinted_references = 10;

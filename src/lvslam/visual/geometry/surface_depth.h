@@ -6,9 +6,14 @@
 
 #include <Eigen/Core>
 
-#include "lvslam/visual/tracking/map_initialization.h"
+namespace lvslam::visual {
 
-namespace lvslam::fusion {
+// A depth sample: metric depth z in the camera frame at a pixel of the raw
+// (distorted) image, e.g. a LiDAR point projected into it.
+struct PixelDepth {
+  Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
+  double depth = 0.0;
+};
 
 // Per pixel the depth of the nearest surface among the samples within
 // radius_px, read at the pixel through a local plane (inverse depth affine in
@@ -18,8 +23,8 @@ namespace lvslam::fusion {
 // where fewer than two samples remain (and everywhere for a radius that is
 // not positive and finite). width x height is the image the samples and
 // pixels are in.
-std::vector<double> surfaceDepths(const std::vector<visual::PixelDepth>& samples,
+std::vector<double> surfaceDepths(const std::vector<PixelDepth>& samples,
                                   const std::vector<Eigen::Vector2d>& pixels, double radius_px, int width,
                                   int height);
 
-}  // namespace lvslam::fusion
+}  // namespace lvslam::visual

@@ -1,12 +1,12 @@
 // LiDAR depth under a pixel: the nearest surface among the samples around
 // it, read at the pixel through a local plane.
-#include "lvslam/fusion/surface_depth.h"
+#include "lvslam/visual/geometry/surface_depth.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-namespace lvslam::fusion {
+namespace lvslam::visual {
 namespace {
 
 // A pinhole camera of focal length kF and principal point (kCx, kCy); the
@@ -19,7 +19,7 @@ double floorDepth(double v) { return kF / (v - kCy); }
 double wallDepth(double u) { return 2.0 * kF / (u - kCx); }
 
 TEST(SurfaceDepths, TheNearestSurfaceWinsAndNeedsTwoSamples) {
-  const std::vector<visual::PixelDepth> samples = {
+  const std::vector<PixelDepth> samples = {
       {{100.0, 100.0}, 2.0}, {{102.0, 101.0}, 2.0}, {{101.0, 98.0}, 5.0},  // a surface at 2 m, a point behind it
       {{300.0, 300.0}, 3.0},                                               // a lone stray
       {{200.0, 200.0}, 4.0}, {{203.0, 200.0}, 6.0}};                       // two samples, different surfaces
@@ -34,7 +34,7 @@ TEST(SurfaceDepths, TheNearestSurfaceWinsAndNeedsTwoSamples) {
 
 TEST(SurfaceDepths, TheFloorAtAGrazingAngleIsReadAtThePixelNotAtItsNearRing) {
   // Two LiDAR rings cross the floor 10 pixels apart; the pixel lies between them.
-  std::vector<visual::PixelDepth> samples;
+  std::vector<PixelDepth> samples;
   for (const double v : {300.0, 310.0})
     for (double u = 312.0; u <= 328.0; u += 2.0) samples.push_back({{u, v}, floorDepth(v)});
   const Eigen::Vector2d pixel(320.0, 305.0);
@@ -45,7 +45,7 @@ TEST(SurfaceDepths, TheFloorAtAGrazingAngleIsReadAtThePixelNotAtItsNearRing) {
 
 TEST(SurfaceDepths, OneRingAlongASlantedWallGivesTheWallsDepthAtThePixel) {
   // One ring: the samples lie on one image row, the wall's depth changes along it.
-  std::vector<visual::PixelDepth> samples;
+  std::vector<PixelDepth> samples;
   for (double u = 400.0; u <= 416.0; u += 2.0) samples.push_back({{u, 240.0}, wallDepth(u)});
   const Eigen::Vector2d pixel(409.0, 243.0);
   // Depth changes by 1.3 % per sample along the ring, 4 % over the radius: one surface.
@@ -57,7 +57,7 @@ TEST(SurfaceDepths, OneRingAlongASlantedWallGivesTheWallsDepthAtThePixel) {
 TEST(SurfaceDepths, WhatLiesBehindTheSurfaceIsDroppedUntilTheRestLieOnOnePlane) {
   // A slanted surface from 10 to 11.9 m in steps of 3 % (its far end more than
   // 5 % beyond its near end) and a wall 17 % behind its far end.
-  std::vector<visual::PixelDepth> samples;
+  std::vector<PixelDepth> samples;
   double z = 10.0;
   for (double u = 100.0; u <= 106.0; u += 1.0, z *= 1.03) samples.push_back({{u, 100.0}, z});
   samples.push_back({{103.0, 103.0}, 14.0});
@@ -70,7 +70,7 @@ TEST(SurfaceDepths, WhatLiesBehindTheSurfaceIsDroppedUntilTheRestLieOnOnePlane) 
 }
 
 TEST(SurfaceDepths, TheRadiusIsAPixelDistance) {
-  const std::vector<visual::PixelDepth> samples = {{{10.0, 10.0}, 3.0}, {{10.0, 13.9}, 3.0}, {{10.0, 14.1}, 3.0}};
+  const std::vector<PixelDepth> samples = {{{10.0, 10.0}, 3.0}, {{10.0, 13.9}, 3.0}, {{10.0, 14.1}, 3.0}};
   // From (10, 10): radius 4 reaches the first two, not the third.
   EXPECT_DOUBLE_EQ(surfaceDepths(samples, {{10.0, 10.0}}, 4.0, 640, 480)[0], 3.0);
   EXPECT_TRUE(std::isnan(surfaceDepths(samples, {{10.0, 6.0}}, 4.0, 640, 480)[0]));  // only the first in reach
@@ -79,7 +79,7 @@ TEST(SurfaceDepths, TheRadiusIsAPixelDistance) {
 
 TEST(SurfaceDepths, NonFiniteSamplesAndPixelsAreIgnored) {
   const double nan = std::nan("");
-  const std::vector<visual::PixelDepth> samples = {
+  const std::vector<PixelDepth> samples = {
       {{10.0, 10.0}, 3.0}, {{11.0, 10.0}, nan}, {{nan, 10.0}, 3.0}, {{10.0, 11.0}, -1.0}};
   const auto depths = surfaceDepths(samples, {{10.0, 10.0}, {nan, nan}}, 4.0, 640, 480);
   EXPECT_TRUE(std::isnan(depths[0]));  // one usable sample only
@@ -87,4 +87,4 @@ TEST(SurfaceDepths, NonFiniteSamplesAndPixelsAreIgnored) {
 }
 
 }  // namespace
-}  // namespace lvslam::fusion
+}  // namespace lvslam::visual

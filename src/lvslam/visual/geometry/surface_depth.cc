@@ -1,4 +1,4 @@
-#include "lvslam/fusion/surface_depth.h"
+#include "lvslam/visual/geometry/surface_depth.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "lvslam/visual/match/feature_grid.h"
 
-namespace lvslam::fusion {
+namespace lvslam::visual {
 
 namespace {
 
@@ -64,7 +64,7 @@ struct LocalPlane {
 
 }  // namespace
 
-std::vector<double> surfaceDepths(const std::vector<visual::PixelDepth>& samples,
+std::vector<double> surfaceDepths(const std::vector<PixelDepth>& samples,
                                   const std::vector<Eigen::Vector2d>& pixels, double radius_px, int width,
                                   int height) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -72,7 +72,7 @@ std::vector<double> surfaceDepths(const std::vector<visual::PixelDepth>& samples
   if (!(radius_px > 0.0) || !std::isfinite(radius_px)) return depths;
   std::vector<Eigen::Vector2d> sample_pixels;
   std::vector<double> sample_depths;
-  for (const visual::PixelDepth& s : samples) {
+  for (const PixelDepth& s : samples) {
     if (!s.pixel.allFinite() || !std::isfinite(s.depth) || !(s.depth > 0.0)) continue;
     sample_pixels.push_back(s.pixel);
     sample_depths.push_back(s.depth);
@@ -80,7 +80,7 @@ std::vector<double> surfaceDepths(const std::vector<visual::PixelDepth>& samples
   if (sample_pixels.empty()) return depths;
   // Cells of the radius (at most the image): a pixel's neighbours lie in the cells around it.
   const double cell = std::ceil(std::min(radius_px, static_cast<double>(std::max({width, height, 1}))));
-  const visual::FeatureGrid grid(sample_pixels, width, height, static_cast<int>(cell));
+  const FeatureGrid grid(sample_pixels, width, height, static_cast<int>(cell));
   std::vector<int> near_ids;
   std::vector<Sample> near;
   for (std::size_t i = 0; i < pixels.size(); ++i) {
@@ -105,4 +105,4 @@ std::vector<double> surfaceDepths(const std::vector<visual::PixelDepth>& samples
   return depths;
 }
 
-}  // namespace lvslam::fusion
+}  // namespace lvslam::visual
