@@ -4,8 +4,9 @@
 // state, tracked features, inliers, image brightness and contrast, metric
 // scale) and decides whether its estimate may enter the output. It drops
 // vision at once when it fails and admits it again only after it has been
-// healthy for a while (the first map, before any failure, at once). Whether vision is *better* than the LiDAR is never
-// decided here: the online estimator weighs both by their own uncertainty.
+// healthy for a while (the first map, before any failure, at once). Whether
+// vision is *better* than the LiDAR is never decided here: the online
+// estimator weighs both by their own uncertainty.
 #include <optional>
 #include <string>
 #include <vector>

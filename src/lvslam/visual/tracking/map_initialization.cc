@@ -20,7 +20,8 @@ int countGoodPoints(const VisualMap& map, const std::vector<int>& ids) {
 std::optional<InitialMap> buildDepthMap(VisualMap& map, const InitializationView& view,
                                         const std::vector<double>& depths, const PinholeIntrinsics& intrinsics,
                                         int min_points) {
-  const auto with_depth = std::count_if(depths.begin(), depths.end(), [](double z) { return std::isfinite(z) && z > 0.0; });
+  const auto with_depth =
+      std::count_if(depths.begin(), depths.end(), [](double z) { return std::isfinite(z) && z > 0.0; });
   if (depths.size() != view.features->points.size() || with_depth < min_points) return std::nullopt;
   InitialMap out;
   Keyframe k;

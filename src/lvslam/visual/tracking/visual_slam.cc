@@ -63,6 +63,14 @@ LocalMapperConfig mapperConfig(const VisualSlamConfig& c) {
   return m;
 }
 
+// Keypoints in raw image pixels, where depth hints and keypoint depths are given.
+std::vector<Eigen::Vector2d> rawKeypointPixels(const FeatureFrame& features) {
+  std::vector<Eigen::Vector2d> pixels;
+  pixels.reserve(features.keypoints.size());
+  for (const cv::KeyPoint& k : features.keypoints) pixels.emplace_back(k.pt.x, k.pt.y);
+  return pixels;
+}
+
 PinholeIntrinsics intrinsicsOf(const PinholeCamera& camera) {
   return {camera.fx(), camera.fy(), camera.cx(), camera.cy()};
 }
@@ -130,7 +138,7 @@ struct VisualSlam::Impl {
   void setReference(const std::vector<double>& depths);
   void startTracking(const Keyframe& keyframe, const InitialMap& built);
   bool trackFrame(VisualFrameResult& result);
-  void recoverOrRestart(const std::vector<double>& depths, VisualFrameResult& result);
+  void recoverOrRestart(const std::vector<PixelDepth>& hints, VisualFrameResult& result);
   bool relocalize(VisualFrameResult& result);
   void loseTracking();
   void newMap();
@@ -193,7 +201,7 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
     } else if (state == TrackingState::kTracking) {
       if (!trackFrame(result)) loseTracking();
     } else {
-      recoverOrRestart(keypointDepths(hints), result);
+      recoverOrRestart(hints, result);
     }
   }
   result.state = state;
@@ -222,10 +230,8 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
 // The depth of the surface under each keypoint of the current frame (NaN:
 // none), read from the hints around it.
 std::vector<double> VisualSlam::Impl::keypointDepths(const std::vector<PixelDepth>& hints) const {
-  std::vector<Eigen::Vector2d> pixels;
-  pixels.reserve(current.features.keypoints.size());
-  for (const cv::KeyPoint& k : current.features.keypoints) pixels.emplace_back(k.pt.x, k.pt.y);
-  return surfaceDepths(hints, pixels, config.depth_radius_px, current.features.width, current.features.height);
+  return surfaceDepths(hints, rawKeypointPixels(current.features), config.depth_radius_px, current.features.width,
+                       current.features.height);
 }
 
 void VisualSlam::Impl::setReference(const std::vector<double>& depths) {
@@ -432,13 +438,13 @@ bool VisualSlam::Impl::relocalize(VisualFrameResult& result) {
   return true;
 }
 
-void VisualSlam::Impl::recoverOrRestart(const std::vector<double>& depths, VisualFrameResult& result) {
+void VisualSlam::Impl::recoverOrRestart(const std::vector<PixelDepth>& hints, VisualFrameResult& result) {
   if (lost_frames <= config.relocalize_frames && map.hasKeyframe(reference_keyframe)) {
     if (!relocalize(result)) ++lost_frames;
     return;
   }
   newMap();
-  initialize(depths, result);
+  initialize(keypointDepths(hints), result);
 }
 
 VisualSlam::VisualSlam(const VisualSlamConfig& config, const PinholeCamera& camera)
@@ -538,12 +544,7 @@ void VisualSlam::addLidarPose(double t, const Eigen::Isometry3d& T_odom_camera) 
   s.attachLidarPoses();
 }
 
-std::vector<Eigen::Vector2d> VisualSlam::keypointPixels() const {
-  std::vector<Eigen::Vector2d> pixels;
-  pixels.reserve(impl_->current.features.keypoints.size());
-  for (const cv::KeyPoint& k : impl_->current.features.keypoints) pixels.emplace_back(k.pt.x, k.pt.y);
-  return pixels;
-}
+std::vector<Eigen::Vector2d> VisualSlam::keypointPixels() const { return rawKeypointPixels(impl_->current.features); }
 
 bool VisualSlam::currentIsKeyframe() const {
   return impl_->current_keyframe >= 0 && impl_->map.hasKeyframe(impl_->current_keyframe);
