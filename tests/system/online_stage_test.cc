@@ -62,6 +62,30 @@ TEST(OnlineStage, ALateVisualRecordHoldsTheLidarsLaterRecordsSoTheOutputSeesTheO
   EXPECT_EQ(callsFor(vision_late), expected);
 }
 
+// The offline refinement rebuilds the online graph from the LiDAR inputs
+// the stage kept: replayed in their order with the visual records, they
+// make exactly the calls the online output saw, improvements included.
+TEST(OnlineStage, ItsLidarInputsReplayedMakeTheOnlineCallsAgain) {
+  std::vector<std::string> online;
+  OnlineStage stage(std::make_unique<RecordingOutput>(online), true, true);
+  for (const Event& e : std::vector<Event>{{false, 0, 1}, {false, 1, 1}, {true, 0, 0}, {false, 0, 2},
+                                           {true, 1, 0}, {false, 1, 2}, {false, 2, 1}, {true, 2, 0}, {true, 3, 0}}) {
+    if (e.visual) stage.visualReady(e.index, VisualFrameRecord{});
+    else stage.lidarReady(e.index, lidarTagged(e.tag));
+  }
+  const std::vector<VisualFrameRecord> visual(4);
+  stage.finish(visual, {lidarTagged(2), lidarTagged(2), lidarTagged(1), lidarTagged(9)});
+  ASSERT_EQ(online, (std::vector<std::string>{"add 0 v l1", "add 1 v l1", "improve 0 l2", "improve 1 l2",
+                                              "add 2 v l1", "add 3 v l9"}));
+  std::vector<std::string> replayed;
+  RecordingOutput replay(replayed);
+  for (const LidarInputEvent& input : stage.takeLidarInputs()) {
+    if (input.improvement) replay.lidarImproved(input.index, input.record);
+    else replay.add(&visual[input.index], &input.record);
+  }
+  EXPECT_EQ(replayed, online);
+}
+
 TEST(OnlineStage, AFrameTheLidarNeverPosedTakesTheWorkersFinalRecordAtTheEnd) {
   std::vector<std::string> calls;
   OnlineStage stage(std::make_unique<RecordingOutput>(calls), true, true);

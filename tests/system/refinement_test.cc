@@ -20,6 +20,7 @@ TEST(Refinement, FusedFramesTheReplayCannotPoseKeepTheirOnlinePose) {
     lidar.T_odom_lidar = Eigen::Isometry3d::Identity();
     lidar.pose_reliable = false;  // between a registered and a lost sweep
     records.lidar.push_back(lidar);
+    records.lidar_inputs.push_back({static_cast<std::size_t>(j), false, lidar});
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
     T.translation().x() = 0.5 * j;
     online.push_back({visual.t, T});
@@ -68,6 +69,7 @@ TEST(Refinement, FusedRefinementTakesVisionAsTracked) {
     lidar.pose_reliable = true;
     lidar.information = information.asDiagonal();
     records.lidar.push_back(lidar);
+    records.lidar_inputs.push_back({static_cast<std::size_t>(j), false, lidar});
     online.push_back({visual.t, T});
   }
   SystemConfig config;

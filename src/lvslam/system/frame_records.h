@@ -68,6 +68,14 @@ struct LidarFrameRecord {
   double fusion_ms = 0.0;
 };
 
+// A LiDAR record as the online output took it: a frame's first pose, or a
+// better one for a frame already out (an improvement).
+struct LidarInputEvent {
+  std::size_t index = 0;
+  bool improvement = false;
+  LidarFrameRecord record;  // without its fusion lines
+};
+
 struct ScanRecord {
   double t = 0.0;
   std::string status;

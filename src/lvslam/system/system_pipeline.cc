@@ -223,6 +223,7 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool final_map_rel
   static const std::vector<LidarFrameRecord> no_lidar;
   stage.finish(workers.visual ? workers.visual->frames() : no_visual, workers.lidar ? workers.lidar->frames() : no_lidar);
   records.online = stage.takeFrames();
+  records.lidar_inputs = stage.takeLidarInputs();
   records.switches = stage.output().switches();
   records.T_world_map = stage.output().mapPlacements();
   if (workers.lidar) {

@@ -46,6 +46,9 @@ struct PipelineRecords {
   // (online/online_output.h), with the detection module's switches and where
   // each visual map sat in the output world.
   std::vector<FrameOutput> online;
+  // The LiDAR records in the order the online output took them (with the
+  // visual records, what rebuilds its graph for the offline refinement).
+  std::vector<LidarInputEvent> lidar_inputs;
   std::vector<SwitchEvent> switches;
   std::map<int, Eigen::Isometry3d> T_world_map;
   std::size_t images = 0, scans_read = 0;  // as read from the source

@@ -7,20 +7,29 @@ namespace lvslam::system {
 
 namespace {
 
-// The estimator again, over the whole run, each LiDAR pose interpolated
-// between the sweeps around it; then its graph smoothed with every node
-// free but the first (the world), chunk by chunk (chunked_smoothing.h).
-// Vision enters as tracked: its poses placed on the map's final keyframes
-// gain nothing here (the estimator already weighs the map's drift) and
-// lose where the final map is worse than the tracking was
+// The online estimator again, over the whole run, on the records it took
+// in the order it took them (each frame's first LiDAR pose, then the
+// better one interpolated between the sweeps around it): the online graph,
+// kept whole. Then smoothed with every node free but the first (the world),
+// chunk by chunk (chunked_smoothing.h). Replayed on the interpolated poses
+// alone, its gate would read the LiDAR's noise from steps the
+// interpolation smoothed. Vision enters as tracked: its poses placed on the
+// map's final keyframes gain nothing here (the estimator already weighs the
+// map's drift) and lose where the final map is worse than the tracking was
 // (docs/benchmarks.md, "Offline refinement").
 Trajectory smoothFusedGraph(const PipelineRecords& records, const SystemConfig& config,
                             const Eigen::Isometry3d& T_camera_lidar) {
   SystemConfig whole_run = config;
   whole_run.estimator.history_s = -1.0;  // the replay keeps the whole graph
   const std::unique_ptr<OnlineOutput> replay = makeOnlineOutput(whole_run, T_camera_lidar);
-  for (std::size_t j = 0; j < records.visual.size() && j < records.lidar.size(); ++j)
-    replay->add(&records.visual[j], &records.lidar[j]);
+  std::size_t added = 0;
+  for (const LidarInputEvent& input : records.lidar_inputs) {
+    if (input.improvement) {
+      replay->lidarImproved(input.index, input.record);
+    } else if (input.index == added && added < records.visual.size()) {
+      replay->add(&records.visual[added++], &input.record);
+    }
+  }
   const FusedEstimator& estimator = *replay->estimator();
   std::vector<PoseNode> nodes = estimator.nodes();
   smoothInChunks(nodes, estimator.factors(), ChunkedSmoothingConfig{});

@@ -20,7 +20,7 @@ void OnlineStage::visualReady(std::size_t index, const VisualFrameRecord& record
 
 void OnlineStage::lidarReady(std::size_t index, const LidarFrameRecord& record) {
   const std::lock_guard lock(mutex_);
-  lidar_events_.push_back({index, record});
+  lidar_events_.push_back({index, false, record});
   lidar_events_.back().record.fusion_lines.clear();
   runReady();
 }
@@ -28,6 +28,10 @@ void OnlineStage::lidarReady(std::size_t index, const LidarFrameRecord& record) 
 void OnlineStage::emit(const VisualFrameRecord* visual, const LidarFrameRecord* lidar) {
   FrameOutput frame = output_->add(visual, lidar);
   const std::size_t index = frames_.size();
+  if (lidar) {
+    lidar_inputs_.push_back({index, false, *lidar});
+    lidar_inputs_.back().record.fusion_lines.clear();
+  }
   if (index < arrivals_.size())
     frame.latency_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - arrivals_[index]).count();
@@ -46,9 +50,10 @@ void OnlineStage::runReady() {
       continue;
     }
     if (lidar_events_.empty()) return;
-    const LidarEvent& event = lidar_events_.front();
+    const LidarInputEvent& event = lidar_events_.front();
     if (event.index < next) {  // out already: a better pose for the estimator's window
       output_->lidarImproved(event.index, event.record);
+      lidar_inputs_.push_back({event.index, true, event.record});
     } else {
       if (event.index > next) return;  // a frame the LiDAR never posed: finish() completes it
       if (has_visual_ && visual == visual_.end()) return;  // later LiDAR records wait for this frame
@@ -77,6 +82,11 @@ void OnlineStage::finish(const std::vector<VisualFrameRecord>& visual, const std
 std::vector<FrameOutput> OnlineStage::takeFrames() {
   const std::lock_guard lock(mutex_);
   return std::move(frames_);
+}
+
+std::vector<LidarInputEvent> OnlineStage::takeLidarInputs() {
+  const std::lock_guard lock(mutex_);
+  return std::move(lidar_inputs_);
 }
 
 }  // namespace lvslam::system

@@ -37,16 +37,15 @@ class OnlineStage {
   void finish(const std::vector<VisualFrameRecord>& visual, const std::vector<LidarFrameRecord>& lidar);
 
   std::vector<FrameOutput> takeFrames();
+  // Every LiDAR record the output took, in the order it took them: replayed
+  // in that order with the visual records, they rebuild the online graph.
+  std::vector<LidarInputEvent> takeLidarInputs();
   // Called with each frame's output as it is made, in frame order (from
   // whichever thread completed the frame, under the stage's lock).
   void onFrameOutput(std::function<void(const FrameOutput&)> listener) { listener_ = std::move(listener); }
   const OnlineOutput& output() const { return *output_; }
 
  private:
-  struct LidarEvent {
-    std::size_t index = 0;
-    LidarFrameRecord record;
-  };
   void runReady();  // with the lock held
   void emit(const VisualFrameRecord* visual, const LidarFrameRecord* lidar);
 
@@ -54,7 +53,8 @@ class OnlineStage {
   bool has_visual_, has_lidar_;
   std::mutex mutex_;
   std::map<std::size_t, VisualFrameRecord> visual_;  // ready, not yet out
-  std::deque<LidarEvent> lidar_events_;             // in the LiDAR thread's order
+  std::deque<LidarInputEvent> lidar_events_;        // in the LiDAR thread's order
+  std::vector<LidarInputEvent> lidar_inputs_;       // as the output took them
   std::vector<std::chrono::steady_clock::time_point> arrivals_;
   std::vector<FrameOutput> frames_;
   std::function<void(const FrameOutput&)> listener_;
