@@ -79,10 +79,7 @@ TEST(OnlineStage, ItsLidarInputsReplayedMakeTheOnlineCallsAgain) {
                                               "add 2 v l1", "add 3 v l9"}));
   std::vector<std::string> replayed;
   RecordingOutput replay(replayed);
-  for (const LidarInputEvent& input : stage.takeLidarInputs()) {
-    if (input.improvement) replay.lidarImproved(input.index, input.record);
-    else replay.add(&visual[input.index], &input.record);
-  }
+  replayLidarInputs(replay, visual, stage.takeLidarInputs());
   EXPECT_EQ(replayed, online);
 }
 

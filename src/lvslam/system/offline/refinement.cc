@@ -2,6 +2,7 @@
 
 #include "lvslam/system/offline/chunked_smoothing.h"
 #include "lvslam/system/offline/loop_correction.h"
+#include "lvslam/system/online/online_stage.h"
 
 namespace lvslam::system {
 
@@ -22,14 +23,7 @@ Trajectory smoothFusedGraph(const PipelineRecords& records, const SystemConfig& 
   SystemConfig whole_run = config;
   whole_run.estimator.history_s = -1.0;  // the replay keeps the whole graph
   const std::unique_ptr<OnlineOutput> replay = makeOnlineOutput(whole_run, T_camera_lidar);
-  std::size_t added = 0;
-  for (const LidarInputEvent& input : records.lidar_inputs) {
-    if (input.improvement) {
-      replay->lidarImproved(input.index, input.record);
-    } else if (input.index == added && added < records.visual.size()) {
-      replay->add(&records.visual[added++], &input.record);
-    }
-  }
+  replayLidarInputs(*replay, records.visual, records.lidar_inputs);
   const FusedEstimator& estimator = *replay->estimator();
   std::vector<PoseNode> nodes = estimator.nodes();
   smoothInChunks(nodes, estimator.factors(), ChunkedSmoothingConfig{});

@@ -2,6 +2,14 @@
 
 namespace lvslam::system {
 
+void replayLidarInputs(OnlineOutput& output, const std::vector<VisualFrameRecord>& visual,
+                       const std::vector<LidarInputEvent>& inputs) {
+  for (const LidarInputEvent& input : inputs) {
+    if (input.improvement) output.lidarImproved(input.index, input.record);
+    else if (input.index < visual.size()) output.add(&visual[input.index], &input.record);
+  }
+}
+
 OnlineStage::OnlineStage(std::unique_ptr<OnlineOutput> output, bool has_visual, bool has_lidar)
     : output_(std::move(output)), has_visual_(has_visual), has_lidar_(has_lidar) {}
 

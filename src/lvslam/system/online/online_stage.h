@@ -21,6 +21,12 @@
 
 namespace lvslam::system {
 
+// Gives `output` the calls the stage made, again: each frame's visual
+// record with its first LiDAR record, and the improvements between, in
+// the order of `inputs` (OnlineStage::takeLidarInputs).
+void replayLidarInputs(OnlineOutput& output, const std::vector<VisualFrameRecord>& visual,
+                       const std::vector<LidarInputEvent>& inputs);
+
 class OnlineStage {
  public:
   OnlineStage(std::unique_ptr<OnlineOutput> output, bool has_visual, bool has_lidar);
