@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <vector>
+
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
 
@@ -137,6 +140,38 @@ TEST(VisualMap, CopiesAndMovesLookUpTheirOwnLandmarks) {
   EXPECT_DOUBLE_EQ(moved.point(p).p_world.x(), 10.0);
   EXPECT_THROW(moved.point(p + 1), Error);
   EXPECT_THROW(moved.line(-1), Error);
+}
+
+// ORB-SLAM's distinctive descriptor: of the keyframes' views of a point, the
+// one whose median Hamming distance to the others is least. The creating
+// view has 40 bits of its own; the central view none; three more views
+// three bits each, apart from each other. With two views neither is more
+// central and the point keeps its descriptor.
+TEST(VisualMap, APointTakesItsMostCentralViewsDescriptor) {
+  const auto descriptorWith = [](int first_bit, int bits) {
+    cv::Mat d(1, 32, CV_8U, cv::Scalar(0));
+    for (int bit = first_bit; bit < first_bit + bits; ++bit) d.at<uint8_t>(0, bit / 8) |= static_cast<uint8_t>(1u << (bit % 8));
+    return d;
+  };
+  const cv::Mat creating = descriptorWith(100, 40), central = descriptorWith(0, 0);
+  const std::vector<cv::Mat> views{creating, descriptorWith(0, 3), central, descriptorWith(3, 3), descriptorWith(6, 3)};
+  const auto distance = [](const cv::Mat& a, const cv::Mat& b) { return cv::norm(a, b, cv::NORM_HAMMING); };
+  VisualMap map;
+  const int p = map.addPointLandmark(Eigen::Vector3d(0, 0, 5), creating);
+  std::optional<VisualMap> copy;
+  for (const cv::Mat& view : views) {
+    Keyframe kf = keyframeWith(2, 0);
+    kf.features.descriptors = cv::Mat(2, 32, CV_8U, cv::Scalar(255));
+    view.copyTo(kf.features.descriptors.row(1));
+    map.addPointObservation(p, map.addKeyframe(std::move(kf)), 1);
+    if (map.point(p).observations.size() == 2) {
+      EXPECT_EQ(distance(map.point(p).descriptor, creating), 0.0);
+      copy = map;
+    }
+  }
+  EXPECT_EQ(distance(map.point(p).descriptor, central), 0.0);
+  // A copy of the map keeps its own descriptor when the original's changes.
+  EXPECT_EQ(distance(copy->point(p).descriptor, creating), 0.0);
 }
 
 // The time a pose's landmarks were mapped: the median of their first

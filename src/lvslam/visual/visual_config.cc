@@ -61,6 +61,7 @@ void addTrackingKeys(ConfigKeys& keys, VisualSlamConfig& c) {
       .add("line_matching.max_line_distance_px", v.line_matching.max_line_distance_px);
   keys.add("tracking.search_radius_px", c.search_radius_px)
       .add("tracking.refine_radius_px", c.refine_radius_px)
+      .add("tracking.max_descriptor_distance", c.track_max_distance)
       .add("tracking.recovery_radius_scale", c.recovery_radius_scale)
       .add("tracking.min_tracked", c.min_tracked)
       .add("tracking.fusion_line_lifetime", c.fusion_line_lifetime)
@@ -149,6 +150,7 @@ void validateTracking(const VisualSlamConfig& c, const ValueCheck& check) {
   check(v.line_matching.ratio > 0.0 && v.line_matching.ratio <= 1.0, "line_matching.ratio", "must be in (0, 1]");
   check(c.search_radius_px > 0.0, "tracking.search_radius_px", "must be positive");
   check(c.refine_radius_px > 0.0, "tracking.refine_radius_px", "must be positive");
+  check(c.track_max_distance >= 0 && c.track_max_distance <= 256, "tracking.max_descriptor_distance", "must be in [0, 256]");
   check(c.recovery_radius_scale >= 1.0, "tracking.recovery_radius_scale", "must be at least 1");
   check(c.min_tracked >= 0, "tracking.min_tracked", "must not be negative");
   check(c.fusion_line_lifetime >= 0, "tracking.fusion_line_lifetime", "must not be negative");

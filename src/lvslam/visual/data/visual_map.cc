@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <limits>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
+#include "lvslam/visual/match/descriptor_distance.h"
 
 namespace lvslam::visual {
 
@@ -136,8 +138,39 @@ void VisualMap::removeObservation(Landmark& landmark, std::vector<int> Keyframe:
 }
 
 void VisualMap::addPointObservation(int point, int keyframe, int index) {
-  addObservation(findById(point_by_id_, point, "point"), &Keyframe::point_landmark, keyframe, index);
+  PointLandmark& p = findById(point_by_id_, point, "point");
+  addObservation(p, &Keyframe::point_landmark, keyframe, index);
+  updateDescriptor(p);
 }
+
+// ORB-SLAM's distinctive descriptor (Mur-Artal et al. 2015, Sec. III-C): of
+// the keyframes' descriptors of the point, the one whose median Hamming
+// distance to the others is least, so that the point stays matchable as
+// the views of it change (the first view's descriptor drifts away from
+// later ones with scale and viewing angle).
+void VisualMap::updateDescriptor(PointLandmark& point) const {
+  std::vector<const uint8_t*> rows;
+  for (const Observation& o : point.observations) {
+    const cv::Mat& descriptors = find(keyframes_, o.keyframe, "keyframe").features.descriptors;
+    if (o.index < descriptors.rows && descriptors.cols == 32 && descriptors.type() == CV_8U) rows.push_back(descriptors.ptr<uint8_t>(o.index));
+  }
+  if (rows.size() < 3) return;  // with two, neither is more central: keep the one the point has
+  std::vector<int> distances(rows.size());
+  int best_median = std::numeric_limits<int>::max();
+  const uint8_t* best = nullptr;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    for (std::size_t j = 0; j < rows.size(); ++j) distances[j] = hammingDistance256(rows[i], rows[j]);
+    const auto middle = distances.begin() + static_cast<std::ptrdiff_t>((rows.size() - 1) / 2);
+    std::nth_element(distances.begin(), middle, distances.end());
+    if (*middle < best_median) {
+      best_median = *middle;
+      best = rows[i];
+    }
+  }
+  // A fresh buffer: copies of the map share their landmarks' descriptors.
+  point.descriptor = cv::Mat(1, 32, CV_8U, const_cast<uint8_t*>(best)).clone();
+}
+
 void VisualMap::addLineObservation(int line, int keyframe, int index) {
   addObservation(findById(line_by_id_, line, "line"), &Keyframe::line_landmark, keyframe, index);
 }

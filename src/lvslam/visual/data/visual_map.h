@@ -88,6 +88,8 @@ class VisualMap {
  private:
   template <typename Landmark>
   void addObservation(Landmark& landmark, std::vector<int> Keyframe::*table, int keyframe, int index);
+  // The point's descriptor: the most central of its observations'.
+  void updateDescriptor(PointLandmark& point) const;
   template <typename Landmark>
   void removeObservation(Landmark& landmark, std::vector<int> Keyframe::*table, int keyframe);
 

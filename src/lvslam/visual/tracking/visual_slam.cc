@@ -48,6 +48,7 @@ FrameTrackerConfig trackerConfig(const VisualSlamConfig& c) {
   t.refine_radius_px = c.refine_radius_px;
   t.min_inliers = c.min_tracked;
   t.point_matching = c.visual.point_matching;
+  t.point_matching.max_distance = c.track_max_distance;
   t.line_matching = c.visual.line_matching;
   t.pose = c.visual.pose;
   return t;

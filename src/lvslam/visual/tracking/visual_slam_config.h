@@ -32,6 +32,10 @@ struct VisualSlamConfig {
   // Tracking.
   double search_radius_px = 15.0;
   double refine_radius_px = 5.0;
+  // ORB distance a projected landmark's match may have (ORB-SLAM's TH_HIGH in
+  // SearchByProjection: the window already tells where to look; the tighter
+  // TH_LOW of point_matching is for matches without a pose).
+  int track_max_distance = 100;
   double recovery_radius_scale = 3.0;  // wider window after a failure / when lost
   int min_tracked = 30;                // point + line inliers
   // Lost: relocalisation into the old map for this many frames, then a new map.
