@@ -142,7 +142,7 @@ TEST(VisualConfig, TrackingAndMappingSections) {
       "visual:\n"
       "  usability: {min_keypoints: 80, min_brightness: 12}\n"
       "  initializer: {window_px: 90, min_matches: 60, max_frames: 20, sigma_px: 1.5}\n"
-      "  tracking: {search_radius_px: 12, min_tracked: 25, lidar_pose_buffer: 32}\n"
+      "  tracking: {search_radius_px: 12, min_tracked: 25, lidar_pose_buffer: 32, max_descriptor_distance: 64}\n"
       "  relocalization: {frames: 10, candidates: 3, min_inliers: 40}\n"
       "  point_matching: {check_orientation: false}\n"
       "  line_matching: {max_offset_px: 50}\n"
@@ -160,6 +160,7 @@ TEST(VisualConfig, TrackingAndMappingSections) {
   EXPECT_DOUBLE_EQ(c.visual.initializer.sigma_px, 1.5);
   EXPECT_DOUBLE_EQ(c.search_radius_px, 12.0);
   EXPECT_EQ(c.min_tracked, 25);
+  EXPECT_EQ(c.track_max_distance, 64);
   EXPECT_EQ(c.lidar_pose_buffer, 32u);
   EXPECT_EQ(c.relocalize_frames, 10);
   EXPECT_EQ(c.relocalize_candidates, 3u);
@@ -173,6 +174,7 @@ TEST(VisualConfig, TrackingAndMappingSections) {
   EXPECT_DOUBLE_EQ(c.depth_check.fusion_ratio, 0.25);
   EXPECT_EQ(c.visual.local_window.fixed_oldest, 3);
   expectErrorNaming("visual:\n  tracking: {search_radius_px: 0}\n", "visual.tracking.search_radius_px");
+  expectErrorNaming("visual:\n  tracking: {max_descriptor_distance: 257}\n", "visual.tracking.max_descriptor_distance");
   expectErrorNaming("visual:\n  usability: {min_brightness: 250}\n", "visual.usability.min_brightness");
   expectErrorNaming("visual:\n  relocalization: {candidates: -1}\n", "visual.relocalization.candidates");
   expectErrorNaming("visual:\n  triangulation: {create_depth_points: true}\n", "create_depth_points");  // the mode's

@@ -152,7 +152,8 @@ void VisualMap::updateDescriptor(PointLandmark& point) const {
   std::vector<const uint8_t*> rows;
   for (const Observation& o : point.observations) {
     const cv::Mat& descriptors = find(keyframes_, o.keyframe, "keyframe").features.descriptors;
-    if (o.index < descriptors.rows && descriptors.cols == 32 && descriptors.type() == CV_8U) rows.push_back(descriptors.ptr<uint8_t>(o.index));
+    if (o.index < descriptors.rows && descriptors.cols == 32 && descriptors.type() == CV_8U)
+      rows.push_back(descriptors.ptr<uint8_t>(o.index));
   }
   if (rows.size() < 3) return;  // with two, neither is more central: keep the one the point has
   std::vector<int> distances(rows.size());
