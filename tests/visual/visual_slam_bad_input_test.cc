@@ -61,16 +61,6 @@ void expectSameMap(const VisualMap& now, const VisualMap& kept) {
   }
 }
 
-// Largest distance between an estimated position, moved by T_gt_est, and the truth.
-double maxTranslationError(const eval::Similarity3& T_gt_est, const Trajectory& estimate, const Trajectory& truth) {
-  double worst = 0.0;
-  for (size_t k = 0; k < estimate.size(); ++k) {
-    const Eigen::Vector3d p_gt = truth[k].T_world_frame.translation();
-    worst = std::max(worst, (T_gt_est.apply(estimate[k].T_world_frame.translation()) - p_gt).norm());
-  }
-  return worst;
-}
-
 Trajectory joined(Trajectory a, const Trajectory& b) {
   a.insert(a.end(), b.begin(), b.end());
   return a;
