@@ -227,7 +227,9 @@ TEST_F(VisualSlamBadInputTest, BlurredFramesAreTrackedWithinTheirStatedUncertain
       EXPECT_EQ(result.map_id, 0);
       EXPECT_EQ(result.keypoints >= config.min_keypoints, c.enough_keypoints);
       EXPECT_GE(result.contrast, config.usability.min_contrast);
-      if (!c.tracked) EXPECT_LT(result.tracked_points, config.min_tracked);
+      if (!c.tracked) {
+        EXPECT_LT(result.tracked_points, config.min_tracked);
+      }
     }
     if (!c.tracked) expectLostAndMapKept(r);
     // The blurred frames' poses against the truth under the sharp frames' alignment.
@@ -243,7 +245,9 @@ TEST_F(VisualSlamBadInputTest, BlurredFramesAreTrackedWithinTheirStatedUncertain
                             r.spoilt_truth[k].T_world_frame.translation())
                                .norm();
       EXPECT_LT(error, 3.0 * std::sqrt(position_covariance.trace()));
-      if (c.sigma_px <= 3.0) EXPECT_LT(error, 0.05);
+      if (c.sigma_px <= 3.0) {
+        EXPECT_LT(error, 0.05);
+      }
     }
     expectPosesInTheOldMap(r);
   }
