@@ -185,13 +185,14 @@ void VisualMap::removeLineObservation(int line, int keyframe) {
 void VisualMap::replacePoint(int from, int into) {
   if (from == into) return;
   const std::vector<Observation> observations = findById(point_by_id_, from, "point").observations;
-  const PointLandmark& target = findById(point_by_id_, into, "point");
+  PointLandmark& target = findById(point_by_id_, into, "point");
   for (const Observation& o : observations) {
     removePointObservation(from, o.keyframe);
     const bool seen = std::any_of(target.observations.begin(), target.observations.end(),
                                   [&](const Observation& t) { return t.keyframe == o.keyframe; });
-    if (!seen) addPointObservation(into, o.keyframe, o.index);
+    if (!seen) addObservation(target, &Keyframe::point_landmark, o.keyframe, o.index);
   }
+  updateDescriptor(target);  // once, over all the views it gained
   erase(points_, point_by_id_, from);
 }
 
