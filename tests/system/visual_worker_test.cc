@@ -127,6 +127,33 @@ TEST(VisualWorker, KeyframeDepthsFromScansAreRecordedAndNothingIsAskedOfTheFusio
   EXPECT_GE(with_depths, 1);
 }
 
+// A tracked frame's inliers are kept for the whole run only where the
+// refinement optimises the frame again on them (visual mode, the paper's
+// output); the fused estimator's refinement replays the frames as tracked.
+std::size_t framesKeepingObservations(const SystemConfig& config) {
+  VisualWorker worker(config, calibrationOfTheRoom(), true);
+  feed(worker, 0.6, 1.45);
+  std::size_t kept = 0;
+  for (const VisualFrameRecord& record : worker.frames())
+    kept += record.result.replay.observations.points.empty() ? 0 : 1;
+  return kept;
+}
+
+TEST(VisualWorker, KeepsEachFramesInliersOnlyWhenTheRefinementRelocatesFrames) {
+  SystemConfig visual = simConfig();
+  visual.mode = RunMode::kVisual;
+  SystemConfig paper = simConfig();
+  paper.paper_output = true;
+  SystemConfig fused = simConfig();
+  ASSERT_EQ(fused.mode, RunMode::kFused);
+  ASSERT_FALSE(fused.paper_output);
+  EXPECT_GE(framesKeepingObservations(visual), 3u);
+  EXPECT_GE(framesKeepingObservations(paper), 3u);
+  EXPECT_EQ(framesKeepingObservations(fused), 0u);
+  paper.final_map_relocation = false;
+  EXPECT_EQ(framesKeepingObservations(paper), 0u);
+}
+
 TEST(VisualWorker, WithDepthsFromFeaturesAKeyframeReturnsItsKeypointsForTheFusionFramework) {
   SystemConfig config = simConfig();
   config.keypoint_depth_source = KeypointDepthSource::kFeatures;

@@ -23,6 +23,11 @@ RunMode parseRunMode(const std::string& name, const std::string& where) {
   throw Error(where, "unknown mode '" + name + "' (lidar, visual or fused)");
 }
 
+bool relocatesInFinalMaps(const SystemConfig& config) {
+  const bool replays_final_poses = config.mode == RunMode::kVisual || (config.mode == RunMode::kFused && config.paper_output);
+  return replays_final_poses && config.final_map_poses && config.final_map_relocation;
+}
+
 void applyAblation(SystemConfig& config, const std::string& name, const std::string& where) {
   if (name == "direction-residual")
     config.visual.visual.local_window.ba.use_direction_residual = false;

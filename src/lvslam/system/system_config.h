@@ -62,6 +62,8 @@ struct SystemConfig {
   bool final_map_poses = true;
   // Those frames then optimised again against the final landmarks
   // (relocateInFinalMaps, final_visual_poses.h); false: only placed.
+  // Visual mode and the paper's output only: the fused estimator's
+  // refinement replays the frames as tracked.
   bool final_map_relocation = true;
   // One thread, fixed order: byte-identical output for the same input.
   bool deterministic = false;
@@ -69,6 +71,10 @@ struct SystemConfig {
   // delivers it (latency as live; otherwise as fast as the system goes).
   bool realtime = false;
 };
+
+// Whether the offline refinement optimises visual frames again in their
+// final maps, so that each frame's tracked observations must be kept.
+bool relocatesInFinalMaps(const SystemConfig& config);
 
 // Switches off one contribution of the paper for the ablation study:
 // "direction-residual" (e_dir in bundle adjustment), "lidar-direction-

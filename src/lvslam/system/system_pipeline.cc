@@ -218,7 +218,7 @@ void workerLoop(BoundedQueue<Job>& queue, Failure& failure, Run run, const std::
   }
 }
 
-PipelineRecords collect(Workers& workers, OnlineStage& stage, bool final_map_relocation, PipelineRecords records) {
+PipelineRecords collect(Workers& workers, OnlineStage& stage, bool relocate, PipelineRecords records) {
   static const std::vector<VisualFrameRecord> no_visual;
   static const std::vector<LidarFrameRecord> no_lidar;
   stage.finish(workers.visual ? workers.visual->frames() : no_visual, workers.lidar ? workers.lidar->frames() : no_lidar);
@@ -239,7 +239,7 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool final_map_rel
     records.visual = workers.visual->takeFrames();
     const visual::VisualSlam& slam = workers.visual->slam();
     placeOnFinalKeyframes(slam.retiredMaps(), slam.map(), records.visual);
-    if (final_map_relocation) relocateInFinalMaps(slam, records.visual);
+    if (relocate) relocateInFinalMaps(slam, records.visual);
     const auto addLines = [&records](const visual::VisualMap& map, int map_id) {
       for (const auto& [id, line] : map.lines())
         records.visual_lines.push_back(
@@ -418,7 +418,7 @@ PipelineRecords runPipeline(SensorSource& source, const SystemConfig& config, co
   if (reading_error) std::rethrow_exception(reading_error);
   if (failure.first()) std::rethrow_exception(failure.first());
   records.scans_read = scans;
-  return collect(workers, stage, config.final_map_relocation, std::move(records));
+  return collect(workers, stage, relocatesInFinalMaps(config), std::move(records));
 }
 
 }  // namespace lvslam::system

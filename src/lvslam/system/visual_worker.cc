@@ -52,6 +52,7 @@ VisualWorker::VisualWorker(const SystemConfig& config, const Calibration& calibr
                           config.keypoint_depth_source == KeypointDepthSource::kScans)),
       keypoint_depth_radius_px_(config.keypoint_depth_radius_px),
       keypoint_depth_max_dt_(config.keypoint_depth_max_dt),
+      keep_replay_observations_(relocatesInFinalMaps(config)),
       slam_(visualSlamConfig(config, depths_from_scans_), requireCamera(calibration)) {}
 
 void VisualWorker::addScan(std::shared_ptr<const LidarScan> scan) {
@@ -91,6 +92,9 @@ std::vector<Eigen::Vector2d> VisualWorker::track(visual::ExtractedImage image, d
     slam_.setKeypointDepths(depths);
     record.hints_ms += depth_watch.ms();
   }
+  // A frame's inliers (about 7 kB) are kept for the whole run only when the
+  // refinement will optimise the frame again on them.
+  if (!keep_replay_observations_) record.result.replay.observations = {};
   frames_.push_back(std::move(record));
   // Fused mode with depths from features: the fusion framework answers.
   if (!depths_from_scans_ && use_keypoint_depths_ && slam_.currentIsKeyframe()) return slam_.keypointPixels();

@@ -52,6 +52,7 @@ class VisualWorker {
   bool depths_from_scans_;  // with a LiDAR: keyframe depths from raw points (system.keypoint_depth_source)
   double keypoint_depth_radius_px_;
   double keypoint_depth_max_dt_;  // s, deskewed raw points for keyframe depths
+  bool keep_replay_observations_;  // the refinement relocates frames in their final maps
   visual::VisualSlam slam_;
   std::vector<std::shared_ptr<const LidarScan>> recent_scans_;
   std::vector<VisualFrameRecord> frames_;
