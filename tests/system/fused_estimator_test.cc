@@ -143,6 +143,39 @@ TEST(FusedEstimator, ADegenerateLidarDirectionTakesTheVisualEstimate) {
   EXPECT_NEAR(last.T_world_camera->translation().y(), 0.0, 0.002);
 }
 
+// The LiDAR walks sideways, 1 mm a frame (4 s, 6 cm at the end), each
+// step well within its stated 1 cm; vision, also stated at 1 cm, stays on
+// the truth (y = 0). A registration that holds the odometry to its map
+// drifts by the odometry's small rate (5 mm per sqrt(m), vision's map
+// 20 mm), so the output follows the LiDAR's walk. A degenerate one does not
+// hold it: each new one walks the odometry's frame by its own covariance,
+// and vision's map, now the steadier frame, keeps the output.
+double lateralOffsetAfterLidarWalk(bool degenerate) {
+  FusedEstimatorConfig config;
+  config.visual_pixel_sigma = 1.0;
+  FusedEstimator estimator(config);
+  const Matrix6d H_lidar = isotropic(0.01, 0.002), H_visual = isotropic(0.01, 0.002);
+  FusedFrameOutput out;
+  for (int j = 0; j < 60; ++j) {
+    LidarFrameInput lidar = lidarAt(at(0.05 * j, 0.001 * j), H_lidar);
+    lidar.degenerate = degenerate;
+    lidar.registration = static_cast<std::size_t>(j + 1);
+    out = estimator.add(kDt * j, lidar, visualAt(at(0.05 * j), H_visual));
+    EXPECT_TRUE(out.gated.empty()) << j;
+  }
+  EXPECT_TRUE(out.T_world_camera);
+  return out.T_world_camera ? out.T_world_camera->translation().y() : 1.0;
+}
+
+// Per frame (5 cm of path) the held odometry's frame may move 1.1 mm and
+// vision's map 4.5 mm: the low frequency goes 16:1 to the LiDAR. A
+// degenerate registration adds its own 1 cm: 5:1 to vision.
+TEST(FusedEstimator, ADegenerateRegistrationLetsTheOdometryFrameWalkByItsOwnCovariance) {
+  const double lidar_offset = 0.001 * 59;
+  EXPECT_GT(lateralOffsetAfterLidarWalk(false), 2.0 / 3.0 * lidar_offset);
+  EXPECT_LT(std::abs(lateralOffsetAfterLidarWalk(true)), 1.0 / 3.0 * lidar_offset);
+}
+
 // The LiDAR lost x for frames 10..29 (its odometry dead-reckoned 20 % slow:
 // 20 cm short by frame 29), then sees x again from frame 30 on, with the
 // right motion but from the dead-reckoned position. Its odometry frame

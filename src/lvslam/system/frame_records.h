@@ -61,6 +61,10 @@ struct LidarFrameRecord {
   // Of T_odom_lidar: the information of the later of those scans' registration
   // (lidar::OdometryResult::information, body-frame perturbation).
   Matrix6d information = Matrix6d::Zero();
+  // That scan's registration was blind along some direction (held at the
+  // prediction there): it did not hold the odometry to its map.
+  bool degenerate = false;
+  std::size_t registration = 0;  // which registered scan the pose comes from (counted from 1)
   std::vector<CameraLine> fusion_lines;
   std::size_t lidar_features = 0;   // accumulated features the fusion framework saw
   std::size_t lidar_points_refined = 0;  // linear points given d_v_mean

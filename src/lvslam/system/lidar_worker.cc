@@ -117,6 +117,8 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable, bool prior_
     frame.T_odom_lidar = T_odom_lidar;
     frame.pose_reliable = reliable && measured;
     frame.information = last_information_;
+    frame.degenerate = last_degenerate_;
+    frame.registration = scan_trajectory_.size();
     if (on_frame_posed_) on_frame_posed_(index, frame);
   };
   std::vector<std::size_t> still_provisional;
@@ -171,6 +173,7 @@ void LidarWorker::registerPending() {
   scans_.push_back(record);
   if (result.status == lidar::OdometryStatus::kRejected) return;  // the frames wait for the next scan
   last_information_ = result.information;
+  last_degenerate_ = result.status == lidar::OdometryStatus::kDegenerate;
   scan_trajectory_.push_back({result.timestamp, result.T_world_lidar});
   const bool lost = result.status == lidar::OdometryStatus::kLost;
   if (!lost) {

@@ -94,6 +94,7 @@ class LidarWorker {
   bool previous_scan_lost_ = false;
   bool previous_scan_whole_ = true;  // registered in every direction
   Matrix6d last_information_ = Matrix6d::Zero();  // of the last registered scan
+  bool last_degenerate_ = false;                  // likewise: blind along some direction
   FramePosed on_frame_posed_;
   std::vector<ScanRecord> scans_;
   std::vector<LidarFrameRecord> frames_;

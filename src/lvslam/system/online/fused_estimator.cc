@@ -17,13 +17,16 @@ constexpr double kDegToRad = M_PI / 180.0;
 // previous node to the next: isotropic about the camera, growing with the
 // root of the path between the camera's two poses in that frame, only along
 // directions the pose was `seen` in (the frame slips freely along the
-// others). No drift (no path, or drift off) leaves a floor: the frame held,
-// the information finite.
+// others), plus `walk` (camera frame) where the frame was not held at all.
+// No drift (no path, or drift off) leaves a floor: the frame held, the
+// information finite.
 Matrix6d driftInformation(const Eigen::Isometry3d& T_frame_previous, const Eigen::Isometry3d& T_frame_camera,
-                          const PseudoInverse& seen, double drift_m, double drift_rad) {
+                          const PseudoInverse& seen, double drift_m, double drift_rad,
+                          const Matrix6d& walk = Matrix6d::Zero()) {
   constexpr double kRigid = 1e-6;
   const double root_path = std::sqrt((T_frame_previous.inverse() * T_frame_camera).translation().norm());
-  const Matrix6d drift = isotropicCovariance(std::max(kRigid, drift_m * root_path), std::max(kRigid, drift_rad * root_path));
+  const Matrix6d drift =
+      isotropicCovariance(std::max(kRigid, drift_m * root_path), std::max(kRigid, drift_rad * root_path)) + walk;
   const Matrix6d Ad_inverse = adjointSE3(T_frame_camera.inverse());
   return Ad_inverse.transpose() * informationOn(seen.range, drift) * Ad_inverse;
 }
@@ -139,9 +142,17 @@ std::optional<FusedEstimator::Candidate> FusedEstimator::lidarFactor(int node, c
   const PseudoInverse seen = pseudoInverse(lidar.information);
   if (seen.rank == 0) return std::nullopt;
   if (!new_start) {  // a new start: the odometry jumped and stayed; its frame takes the jump, the output does not
+    // A degenerate registration kept some directions at the prediction
+    // (Zhang et al. 2016) and went into the map so: scan-to-map no longer
+    // holds the odometry to its map, and its error stays, as a frame-to-frame
+    // odometry's does. Each new one walks the frame by its own covariance, as
+    // weighed by its steps (the step gate's noise scale).
+    const bool walks = lidar.degenerate && lidar.registration > last_walk_registration_;
+    if (walks) last_walk_registration_ = lidar.registration;
+    const Matrix6d walk = walks ? seen.inverse : Matrix6d::Zero();
     accept({previous_odom, odom, Eigen::Isometry3d::Identity(),
             driftInformation(previous.T_odom_camera, lidar.T_odom_camera, seen, config_.lidar_drift_m,
-                             config_.lidar_drift_deg * kDegToRad),
+                             config_.lidar_drift_deg * kDegToRad, walk),
             FactorSource::kLidar});
   }
   return makeCandidate({odom, node, lidar.T_odom_camera, lidar.information, FactorSource::kLidar});

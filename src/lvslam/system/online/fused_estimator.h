@@ -9,6 +9,8 @@
 //    information); consecutive odometry-frame nodes are tied by the
 //    odometry's drift per metre of path (a random walk about the camera),
 //    so scan-to-map registration errors stay white and only drift accumulates;
+//    a degenerate registration (blind along some direction) does not hold
+//    the odometry to its map, and walks its frame by its own covariance;
 //  - visual: the tracker's camera pose in its map, through the map's own
 //    node (T_world_map, one per frame with a visual pose), its information
 //    from the tracker's Hessian (the pose against the map's landmarks, so
@@ -58,6 +60,11 @@ struct LidarFrameInput {
   Eigen::Isometry3d T_odom_camera = Eigen::Isometry3d::Identity();
   // Of T_odom_camera, camera-frame right perturbation; zero where degenerate.
   Matrix6d information = Matrix6d::Zero();
+  // The registration was blind along some direction: scan-to-map did not
+  // hold the odometry to its map, which then walks like frame-to-frame
+  // odometry, by each new registration's own error.
+  bool degenerate = false;
+  std::size_t registration = 0;  // which registered scan the pose comes from
 };
 
 // The visual subsystem's view of one camera frame (admitted by the
@@ -144,6 +151,7 @@ class FusedEstimator {
   std::vector<int> camera_nodes_;             // in frame order
   // The odometry-frame node of the last LiDAR pose, and that pose.
   std::optional<std::pair<int, LidarFrameInput>> last_lidar_;
+  std::size_t last_walk_registration_ = 0;  // the last degenerate registration its frame walked by
   // Per visual map: its node at the last visual pose, that pose, and the
   // map's corrections since (p_new = T_new_old p_old).
   struct LastVisual {

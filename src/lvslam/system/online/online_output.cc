@@ -136,7 +136,7 @@ class FusedOnline final : public OnlineOutput {
   std::optional<LidarFrameInput> lidarInput(const LidarFrameRecord& l) const {
     if (!l.T_odom_lidar || !l.pose_reliable || l.information.isZero()) return std::nullopt;
     return LidarFrameInput{*l.T_odom_lidar * T_camera_lidar_.inverse(),
-                           lidarToCameraInformation(l.information, T_camera_lidar_)};
+                           lidarToCameraInformation(l.information, T_camera_lidar_), l.degenerate, l.registration};
   }
 
   // The frame's visual pose in its map as tracked, with the map's
