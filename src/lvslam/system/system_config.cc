@@ -24,7 +24,8 @@ RunMode parseRunMode(const std::string& name, const std::string& where) {
 }
 
 bool relocatesInFinalMaps(const SystemConfig& config) {
-  const bool replays_final_poses = config.mode == RunMode::kVisual || (config.mode == RunMode::kFused && config.paper_output);
+  const bool replays_final_poses =
+      config.mode == RunMode::kVisual || (config.mode == RunMode::kFused && config.paper_output);
   return replays_final_poses && config.final_map_poses && config.final_map_relocation;
 }
 
