@@ -58,7 +58,8 @@ void addSimulateCommand(CLI::App& app, CommandAction& action) {
       "200 Hz) of an M2DGR-like scene or a family preset. See docs/simulator.md.");
   auto args = std::make_shared<SimulateArgs>();
   cmd->add_option("--scenario", args->options.scenario,
-                  "room (office), hall (large hall), gate (outdoors), corridor, yard, office (plain) or atrium (glass)")
+                  "room (office), hall (large hall), gate (outdoors), corridor, yard, office (plain), atrium (glass) "
+                  "or twins (two identical rooms on a corridor)")
       ->default_val("room");
   std::string families;
   for (const auto& name : sim::familyNames()) families += (families.empty() ? "" : ", ") + name;

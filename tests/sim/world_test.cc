@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -88,6 +89,39 @@ TEST(World, EdgesIncludeWallFloorBoundariesAndLieOnSurfaces) {
   }
   EXPECT_TRUE(south_floor_edge);
   EXPECT_GT(edges.size(), 1000u);  // furniture, frames and books give many lines
+}
+
+// The twins scene's room B is room A moved 14 m: every ray from a point of
+// room A meets what the same ray from the same point of room B meets, at the
+// same range, and (but where rounding of the shift moves a hit across a
+// texel's border) the same albedo; except through the opening. Its
+// drive keeps the camera and the LiDAR clear of every surface.
+TEST(World, TwinRoomsAreExactCopiesAndTheDriveStaysInFreeSpace) {
+  SimOptions options;
+  options.duration = 140.0;
+  const Scenario scenario = makeScenario("twins", options);
+  const Eigen::Vector3d shift(14.0, 0.0, 0.0);
+  CounterRandom rng(7, RandomStream::kScene, 1);
+  int compared = 0, same_albedo = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Eigen::Vector3d origin(rng.uniform(1.0, 9.0), rng.uniform(1.0, 7.0), rng.uniform(0.3, 2.7));
+    const Eigen::Vector3d dir(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+    const auto a = scenario.world.raycast(origin, dir);
+    const auto b = scenario.world.raycast(origin + shift, dir);
+    ASSERT_TRUE(a && b);
+    if ((origin + a->distance * dir.normalized()).y() > 7.99) continue;  // through the opening
+    EXPECT_NEAR(a->distance, b->distance, 1e-9);
+    EXPECT_TRUE(a->normal.isApprox(b->normal, 1e-9));
+    same_albedo += std::abs(a->albedo - b->albedo) < 1e-9;
+    ++compared;
+  }
+  EXPECT_GT(compared, 1800);
+  EXPECT_GT(same_albedo, 0.99 * compared);
+  double clearance = 1e9;
+  for (double t = 0.0; t < options.duration; t += 0.05)
+    for (const Eigen::Isometry3d& T : {scenario.T_world_camera(t), scenario.T_world_lidar(t)})
+      clearance = std::min(clearance, scenario.world.distanceToSurface(T.translation()));
+  EXPECT_GT(clearance, 0.3);  // a small robot's half width
 }
 
 }  // namespace

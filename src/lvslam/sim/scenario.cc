@@ -74,6 +74,7 @@ SceneSetup buildScene(const std::string& name, SceneBuilder& scene) {
   if (name == "corridor") return buildCorridorScene(scene);
   if (name == "yard") return buildYardScene(scene);
   if (name == "office") return buildOfficeScene(scene);
+  if (name == "twins") return buildTwinsScene(scene);
   return buildAtriumScene(scene);
 }
 

@@ -47,6 +47,15 @@ void SceneBuilder::wallBox(const WallFrame& wall, double s, double z, const Eige
   box(wall.at(s + 0.5 * size.x(), z + 0.5 * size.y(), 0.5 * size.z()), wall.axes(), 0.5 * size, texture);
 }
 
+void SceneBuilder::repeatShifted(std::size_t first, const Eigen::Vector3d& shift) {
+  const std::size_t end = primitives_.size();
+  for (std::size_t i = first; i < end; ++i) {
+    Primitive copy = primitives_[i];
+    copy.center += shift;
+    primitives_.push_back(copy);
+  }
+}
+
 void SceneBuilder::cylinder(const Eigen::Vector2d& xy, double z0, double z1, double radius, int texture) {
   primitives_.push_back({PrimitiveKind::kCylinder, Eigen::Matrix3d::Identity(),
                          Eigen::Vector3d(xy.x(), xy.y(), 0.5 * (z0 + z1)),

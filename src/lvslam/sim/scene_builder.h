@@ -43,6 +43,11 @@ class SceneBuilder {
   void cylinder(const Eigen::Vector2d& xy, double z0, double z1, double radius, int texture);
   void sphere(const Eigen::Vector3d& center, double radius, int texture);
 
+  // Copies of the primitives added from `first` on, moved by `shift`, with
+  // the same textures: an identical twin of what was built since.
+  std::size_t primitiveCount() const { return primitives_.size(); }
+  void repeatShifted(std::size_t first, const Eigen::Vector3d& shift);
+
   CounterRandom& rng() { return rng_; }
   World build() const { return World(primitives_, textures_); }
 

@@ -54,5 +54,10 @@ SceneSetup buildOfficeScene(SceneBuilder& scene);
 // An atrium walled by glass: a curtain-wall facade, glass partitions in front
 // of meeting rooms, pillars and a few pieces of furniture.
 SceneSetup buildAtriumScene(SceneBuilder& scene);
+// Two identical offices side by side along a corridor (the second a shifted
+// copy of the first, furniture and textures included): a lap through one, the
+// corridor, the same lap through the other. What place recognition must not
+// take for a loop.
+SceneSetup buildTwinsScene(SceneBuilder& scene);
 
 }  // namespace lvslam::sim

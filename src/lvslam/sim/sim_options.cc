@@ -25,10 +25,10 @@ std::vector<double> parsePair(const std::string& text, const std::string& option
 }  // namespace
 
 void validate(const SimOptions& options) {
-  const std::vector<std::string> scenarios{"room", "hall", "gate", "corridor", "yard", "office", "atrium"};
+  const std::vector<std::string> scenarios{"room", "hall", "gate", "corridor", "yard", "office", "atrium", "twins"};
   if (std::find(scenarios.begin(), scenarios.end(), options.scenario) == scenarios.end())
     throw Error("--scenario", "unknown scenario '" + options.scenario +
-                                  "' (expected room, hall, gate, corridor, yard, office or atrium)");
+                                  "' (expected room, hall, gate, corridor, yard, office, atrium or twins)");
   if (options.lidar != "vlp32c" && options.lidar != "vlp16")
     throw Error("--lidar", "unknown LiDAR '" + options.lidar + "' (expected vlp32c or vlp16)");
   if (options.blur_samples < 2 || options.blur_samples > 16)
