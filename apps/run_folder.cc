@@ -29,7 +29,8 @@ void finishRunFolder(const std::string& out_dir, const Recording& recording, con
   system::writeRunOutputs(out_dir, run.records, run.output, run.summary, {run.accuracy, run.accuracy_refined},
                           !deterministic);
   std::cout << system::formatRunSummary(run.summary, run.output);
-  if (run.records.loop) std::cout << system::formatLoopSummary(*run.records.loop);
+  if (run.output.loop && run.records.loop)
+    std::cout << system::formatLoopSummary(*run.output.loop, *run.records.loop);
   std::cout << fmt::format("wrote {}/{{trajectory.tum (online {}, {} poses), trajectory_refined.tum (offline, {} poses), "
                            "stats.json, map.ply ({} points), lines.ply ({} lines)}}\n",
                            out_dir, run.output.trajectory_is_camera ? "T_world_camera" : "T_world_lidar",

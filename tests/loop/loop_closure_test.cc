@@ -61,5 +61,40 @@ TEST(LoopClosure, ASymmetricPlaceThatRegistersWellIsRefusedByTheOdometry) {
   EXPECT_TRUE(result.T_odom_lidar_corrected[1].isApprox(result.T_odom_lidar[1]));
 }
 
+// The same loop gated again on better keyframe poses (fused mode's): the
+// LiDAR odometry drifted 2 m over the lap and refused it; on poses 5 cm off
+// it passes and the graph takes it. The half-turned place stays refused.
+TEST(LoopClosure, ALoopRefusedOnADriftedOdometryIsTakenOnBetterPoses) {
+  const auto scene = symmetricHall();
+  LoopClosure closure{LoopClosureConfig{}, lidar::RegistrationConfig{}};
+  EXPECT_FALSE(closure.addKeyframe(keyframe(scene, at(-5, 0), at(-5, 0), 0.0, 0.0)));
+  EXPECT_FALSE(closure.addKeyframe(keyframe(scene, at(-4.7, 0), at(-2.7, 0), 30.0, 20.0)));
+  const LoopClosureResult live = closure.solve();
+  ASSERT_EQ(live.candidates.size(), 1u);
+  EXPECT_EQ(live.candidates[0].reason.rfind("off the odometry by", 0), 0u) << live.candidates[0].reason;
+
+  const LoopClosureResult better = regateWithOdometry(live, {at(-5, 0), at(-4.65, 0)}, "fused", LoopClosureConfig{});
+  EXPECT_EQ(better.odometry, "fused");
+  ASSERT_EQ(better.accepted(), 1u);
+  ASSERT_TRUE(better.solved);
+  EXPECT_NEAR((better.T_odom_lidar_corrected[0].inverse() * better.T_odom_lidar_corrected[1]).translation().x(), 0.3,
+              0.02);
+  EXPECT_GT(better.candidates[0].graph_weight, 0.9);
+  EXPECT_EQ(better.path_lengths, live.path_lengths);
+}
+
+TEST(LoopClosure, ASymmetricPlaceStaysRefusedOnExactPoses) {
+  const auto scene = symmetricHall();
+  LoopClosure closure{LoopClosureConfig{}, lidar::RegistrationConfig{}};
+  closure.addKeyframe(keyframe(scene, at(-5, 0), at(-5, 0), 0.0, 0.0));
+  closure.addKeyframe(keyframe(scene, at(5, M_PI), at(5, M_PI), 30.0, 20.0));
+  const LoopClosureResult again =
+      regateWithOdometry(closure.solve(), {at(-5, 0), at(5, M_PI)}, "fused", LoopClosureConfig{});
+  ASSERT_EQ(again.candidates.size(), 1u);
+  EXPECT_TRUE(again.candidates[0].verification.accepted);
+  EXPECT_EQ(again.candidates[0].reason.rfind("off the odometry by", 0), 0u) << again.candidates[0].reason;
+  EXPECT_EQ(again.accepted(), 0u);
+}
+
 }  // namespace
 }  // namespace lvslam::loop

@@ -27,7 +27,7 @@ TEST(Refinement, FusedFramesTheReplayCannotPoseKeepTheirOnlinePose) {
   }
   SystemConfig config;
   config.mode = RunMode::kFused;
-  const Trajectory refined = refineTrajectory(records, config, Eigen::Isometry3d::Identity(), online);
+  const Trajectory refined = refineTrajectory(records, config, Eigen::Isometry3d::Identity(), online).trajectory;
   ASSERT_EQ(refined.size(), online.size());
   for (std::size_t j = 0; j < online.size(); ++j) {
     EXPECT_EQ(refined[j].t, online[j].t);
@@ -74,7 +74,7 @@ TEST(Refinement, FusedRefinementTakesVisionAsTracked) {
   }
   SystemConfig config;
   config.mode = RunMode::kFused;
-  const Trajectory refined = refineTrajectory(records, config, Eigen::Isometry3d::Identity(), online);
+  const Trajectory refined = refineTrajectory(records, config, Eigen::Isometry3d::Identity(), online).trajectory;
   ASSERT_EQ(refined.size(), online.size());
   for (std::size_t j = 0; j < online.size(); ++j)
     EXPECT_LT((refined[j].T_world_frame.translation() - online[j].T_world_frame.translation()).norm(), 0.005) << j;

@@ -36,12 +36,24 @@ struct LoopCandidateRecord {
 
 struct LoopClosureResult {
   std::vector<double> keyframe_times;
+  std::vector<double> path_lengths;                       // the odometry's path from the first keyframe
   std::vector<Eigen::Isometry3d> T_odom_lidar;            // the odometry's keyframe poses
   std::vector<Eigen::Isometry3d> T_odom_lidar_corrected;  // after the graph
   std::vector<LoopCandidateRecord> candidates;
+  // Whose the keyframe poses are: "lidar" (the LiDAR odometry, as the run
+  // made them) or "fused" (regateWithOdometry on the fused trajectory).
+  std::string odometry = "lidar";
   bool solved = false;
   std::size_t accepted() const;
 };
+
+// The loop closure again over the same keyframes and the candidates the ICP
+// verified, with other poses for the keyframes (fused mode: the fused
+// estimator's, one per keyframe of `live`): each verified candidate is gated
+// against them afresh, and the graph solved from them. The keyframes keep
+// their path lengths.
+LoopClosureResult regateWithOdometry(const LoopClosureResult& live, const std::vector<Eigen::Isometry3d>& T_odom_lidar,
+                                     const std::string& odometry, const LoopClosureConfig& config);
 
 class LoopClosure {
  public:
@@ -57,8 +69,6 @@ class LoopClosure {
 
  private:
   std::vector<SubmapScan> submapAround(int candidate) const;
-  GraphEdge odometryEdge(int to) const;
-  std::string offOdometry(int candidate, const Eigen::Isometry3d& T_candidate_query) const;
 
   LoopClosureConfig config_;
   lidar::RegistrationConfig registration_;
@@ -66,8 +76,6 @@ class LoopClosure {
   std::vector<ScanContext> descriptors_;
   std::vector<double> path_lengths_;
   std::vector<LoopCandidateRecord> candidates_;
-  std::vector<std::size_t> loop_records_;  // index into candidates_ of each loop edge
-  std::vector<GraphEdge> loop_edges_;
 };
 
 }  // namespace lvslam::loop

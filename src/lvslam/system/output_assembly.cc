@@ -82,10 +82,17 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
       any_pose = true;
     }
   }
-  out.trajectory_refined = refineTrajectory(records, config, T_camera_lidar, out.trajectory);
+  Refinement refinement = refineTrajectory(records, config, T_camera_lidar, out.trajectory);
+  out.trajectory_refined = std::move(refinement.trajectory);
+  out.loop = std::move(refinement.loop);
   std::optional<LoopCorrection> loop;
-  if (records.loop && records.loop->solved) loop.emplace(*records.loop);
-  out.lidar_map = loop ? correctMap(records.lidar_map, records.lidar_map_keyframe_starts, *loop) : records.lidar_map;
+  if (out.loop && out.loop->solved) loop.emplace(*out.loop);
+  // The map's points are in the LiDAR odometry's frame: each moves from its
+  // keyframe's odometry pose to the keyframe's corrected pose.
+  out.lidar_map = loop ? correctMap(records.lidar_map, records.lidar_map_keyframe_starts,
+                                    LoopCorrection(out.loop->keyframe_times, records.loop->T_odom_lidar,
+                                                   out.loop->T_odom_lidar_corrected))
+                       : records.lidar_map;
   addLines(records, loop, out);
   addSubsystemTrajectories(records, config, T_lidar_camera, out);
   return out;

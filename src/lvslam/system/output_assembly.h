@@ -28,6 +28,9 @@ struct SystemOutput {
   std::vector<SwitchEvent> switches;
   // Where each visual map that reached the output sits in its world.
   std::map<int, Eigen::Isometry3d> T_world_map;
+  // The loop closure as applied to trajectory_refined, map.ply and the
+  // lines (refinement.h); none without loop closure.
+  std::optional<loop::LoopClosureResult> loop;
   // The LiDAR map (odometry frame), each point moved with its keyframe's
   // loop correction when loops were closed.
   std::vector<PlyPoint> lidar_map;

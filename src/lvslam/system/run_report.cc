@@ -279,7 +279,7 @@ void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records,
       .addRaw("switches", jsonList(switches))
       .addRaw("frames", jsonList(frames))
       .addRaw("scans", jsonList(scans));
-  if (records.loop) json.addRaw("loop", loopJson(*records.loop));
+  if (output.loop) json.addRaw("loop", loopJson(*output.loop));
   if (!records.extrinsic_checks.empty()) {
     std::vector<std::string> checks;
     for (const fusion::ExtrinsicVerdict& v : records.extrinsic_checks) checks.push_back(extrinsicCheckJson(v));

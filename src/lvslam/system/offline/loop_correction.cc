@@ -11,9 +11,14 @@ constexpr double kSameTime = 1e-6;  // seconds
 
 }  // namespace
 
-LoopCorrection::LoopCorrection(const loop::LoopClosureResult& result) : times_(result.keyframe_times) {
-  for (std::size_t k = 0; k < result.T_odom_lidar.size(); ++k)
-    corrections_.push_back(result.T_odom_lidar_corrected[k] * result.T_odom_lidar[k].inverse());
+LoopCorrection::LoopCorrection(const loop::LoopClosureResult& result)
+    : LoopCorrection(result.keyframe_times, result.T_odom_lidar, result.T_odom_lidar_corrected) {}
+
+LoopCorrection::LoopCorrection(const std::vector<double>& times, const std::vector<Eigen::Isometry3d>& T_odom_keyframe,
+                               const std::vector<Eigen::Isometry3d>& T_corrected_keyframe)
+    : times_(times) {
+  for (std::size_t k = 0; k < T_odom_keyframe.size() && k < T_corrected_keyframe.size(); ++k)
+    corrections_.push_back(T_corrected_keyframe[k] * T_odom_keyframe[k].inverse());
   if (corrections_.empty()) {
     times_ = {0.0};
     corrections_ = {Eigen::Isometry3d::Identity()};

@@ -16,6 +16,10 @@ namespace lvslam::system {
 class LoopCorrection {
  public:
   explicit LoopCorrection(const loop::LoopClosureResult& result);
+  // From each keyframe's pose in another odometry (whose frame the points
+  // or poses to move are in) to its corrected pose.
+  LoopCorrection(const std::vector<double>& times, const std::vector<Eigen::Isometry3d>& T_odom_keyframe,
+                 const std::vector<Eigen::Isometry3d>& T_corrected_keyframe);
 
   // Of the last keyframe at or before t (the first keyframe's before it).
   const Eigen::Isometry3d& atTime(double t) const;

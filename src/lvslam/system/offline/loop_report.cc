@@ -59,6 +59,7 @@ std::string loopJson(const loop::LoopClosureResult& result) {
   std::vector<std::string> candidates;
   for (const loop::LoopCandidateRecord& c : result.candidates) candidates.push_back(candidateJson(c));
   return JsonObject()
+      .addString("odometry", result.odometry)
       .addCount("keyframes", result.keyframe_times.size())
       .addRaw("keyframe_t", eval::jsonArray(result.keyframe_times))
       .addCount("candidates", result.candidates.size())
@@ -70,11 +71,17 @@ std::string loopJson(const loop::LoopClosureResult& result) {
       .str();
 }
 
-std::string formatLoopSummary(const loop::LoopClosureResult& result) {
-  return fmt::format("loop closure: {} keyframes, {} candidates, {} verified, {} accepted; keyframes moved up to "
+std::string formatLoopSummary(const loop::LoopClosureResult& applied, const loop::LoopClosureResult& live) {
+  const std::string gated =
+      applied.odometry == live.odometry
+          ? ""
+          : fmt::format(" (gated on the {} trajectory; {} on the {} odometry)", applied.odometry, live.accepted(),
+                        live.odometry);
+  return fmt::format("loop closure: {} keyframes, {} candidates, {} verified, {} accepted{}; keyframes moved up to "
                      "{:.3f} m{}\n",
-                     result.keyframe_times.size(), result.candidates.size(), verifiedCount(result), result.accepted(),
-                     largestKeyframeMove(result), result.solved ? "" : " (the graph failed to solve: not applied)");
+                     applied.keyframe_times.size(), applied.candidates.size(), verifiedCount(applied),
+                     applied.accepted(), gated, largestKeyframeMove(applied),
+                     applied.solved ? "" : " (the graph failed to solve: not applied)");
 }
 
 }  // namespace lvslam::system

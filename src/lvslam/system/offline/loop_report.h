@@ -10,6 +10,7 @@
 namespace lvslam::system {
 
 std::string loopJson(const loop::LoopClosureResult& result);
-std::string formatLoopSummary(const loop::LoopClosureResult& result);
+// `applied`: as the output applied it (SystemOutput::loop); `live`: as the run made it.
+std::string formatLoopSummary(const loop::LoopClosureResult& applied, const loop::LoopClosureResult& live);
 
 }  // namespace lvslam::system

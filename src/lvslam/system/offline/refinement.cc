@@ -2,6 +2,7 @@
 
 #include "lvslam/system/offline/chunked_smoothing.h"
 #include "lvslam/system/offline/loop_correction.h"
+#include "lvslam/system/offline/loop_on_fused.h"
 #include "lvslam/system/online/online_stage.h"
 
 namespace lvslam::system {
@@ -86,13 +87,20 @@ Trajectory refineWithoutLoops(const PipelineRecords& records, const SystemConfig
 
 }  // namespace
 
-Trajectory refineTrajectory(const PipelineRecords& records, const SystemConfig& config,
+Refinement refineTrajectory(const PipelineRecords& records, const SystemConfig& config,
                             const Eigen::Isometry3d& T_camera_lidar, const Trajectory& online) {
-  Trajectory refined = refineWithoutLoops(records, config, T_camera_lidar, online);
-  if (!records.loop || records.loop->accepted() == 0 || !records.loop->solved) return refined;
+  Refinement out{refineWithoutLoops(records, config, T_camera_lidar, online), records.loop};
+  if (!records.loop) return out;
   // The LiDAR odometry of the refined poses' sensor: the camera's per frame, else the LiDAR's per scan.
   const Trajectory odometry = records.lidar.empty() ? records.T_odom_lidar_scans : lidarAtFrames(records, T_camera_lidar);
-  return correctTrajectory(refined, odometry, LoopCorrection(*records.loop));
+  std::optional<loop::LoopClosureResult> on_fused;
+  if (config.mode == RunMode::kFused && !config.paper_output)
+    on_fused = loopOnFusedTrajectory(*records.loop, out.trajectory, odometry, config.loop);
+  if (on_fused) out.loop = on_fused;
+  if (out.loop->accepted() == 0 || !out.loop->solved) return out;
+  // On the fused poses the corrections apply to the refined poses themselves.
+  out.trajectory = correctTrajectory(out.trajectory, on_fused ? out.trajectory : odometry, LoopCorrection(*out.loop));
+  return out;
 }
 
 }  // namespace lvslam::system

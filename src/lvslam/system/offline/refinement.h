@@ -12,14 +12,25 @@
 // between the registered sweeps around it (online: the sweep covering it).
 // A frame the refinement cannot pose keeps its online pose. Then, in every
 // mode with LiDAR loop closure, each frame moved with its keyframe's
-// correction (loop_correction.h).
+// correction (loop_correction.h); in fused mode the loops are gated and the
+// keyframe graph solved on the fused trajectory (loop_on_fused.h).
+#include <optional>
+
 #include "lvslam/core/trajectory.h"
+#include "lvslam/loop/loop_closure.h"
 #include "lvslam/system/system_config.h"
 #include "lvslam/system/system_pipeline.h"
 
 namespace lvslam::system {
 
-Trajectory refineTrajectory(const PipelineRecords& records, const SystemConfig& config,
+struct Refinement {
+  Trajectory trajectory;
+  // The loop closure as applied to `trajectory` (fused mode: on the fused
+  // poses; otherwise the run's own); none without loop closure.
+  std::optional<loop::LoopClosureResult> loop;
+};
+
+Refinement refineTrajectory(const PipelineRecords& records, const SystemConfig& config,
                             const Eigen::Isometry3d& T_camera_lidar, const Trajectory& online);
 
 }  // namespace lvslam::system
