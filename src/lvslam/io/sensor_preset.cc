@@ -10,18 +10,11 @@
 
 namespace lvslam {
 
-Calibration SensorPreset::calibration() const {
-  Calibration c;
-  if (camera) c.camera = camera->camera;
-  c.T_camera_lidar = T_camera_lidar;
-  return c;
-}
+Calibration SensorPreset::calibration() const { return calibrationOf(camera, T_camera_lidar); }
 
 SensorPreset loadSensorPreset(const std::string& path) {
   const YamlConfig root = YamlConfig::loadFile(path);
-  const std::string format = root.at("format").asString();
-  if (format != kSensorPresetFormat)
-    root.at("format").fail(fmt::format("expected '{}', got '{}'", kSensorPresetFormat, format));
+  requireFormat(root, kSensorPresetFormat);
   SensorPreset preset;
   preset.name = root.getString("name", std::filesystem::path(path).stem().string());
   if (const auto topics = root.find("topics")) {
@@ -39,12 +32,7 @@ SensorPreset loadSensorPreset(const std::string& path) {
   } else if (preset.camera) {
     root.at("extrinsics");  // throws: a camera needs its pose relative to the LiDAR
   }
-  if (const auto gt = root.find("groundtruth")) {
-    const std::string frame = gt->at("frame").asString();
-    if (frame == "camera") preset.groundtruth_frame = GroundTruthFrame::kCamera;
-    else if (frame == "lidar") preset.groundtruth_frame = GroundTruthFrame::kLidar;
-    else gt->at("frame").fail("expected 'camera' or 'lidar', got '" + frame + "'");
-  }
+  if (const auto gt = root.find("groundtruth")) preset.groundtruth_frame = parseGroundTruthFrame(gt->at("frame"));
   return preset;
 }
 

@@ -77,18 +77,30 @@ Eigen::Isometry3d parseTransformMatrix(const YamlConfig& node) {
   return makePose(closestRotation(M.topLeftCorner<3, 3>()), M.topRightCorner<3, 1>());
 }
 
-Calibration SequenceInfo::calibration() const {
+void requireFormat(const YamlConfig& root, const char* expected) {
+  const std::string format = root.at("format").asString();
+  if (format != expected) root.at("format").fail(fmt::format("expected '{}', got '{}'", expected, format));
+}
+
+GroundTruthFrame parseGroundTruthFrame(const YamlConfig& frame) {
+  const std::string name = frame.asString();
+  if (name == "camera") return GroundTruthFrame::kCamera;
+  if (name != "lidar") frame.fail("expected 'camera' or 'lidar', got '" + name + "'");
+  return GroundTruthFrame::kLidar;
+}
+
+Calibration calibrationOf(const std::optional<CameraInfo>& camera, const Eigen::Isometry3d& T_camera_lidar) {
   Calibration c;
   if (camera) c.camera = camera->camera;
   c.T_camera_lidar = T_camera_lidar;
   return c;
 }
 
+Calibration SequenceInfo::calibration() const { return calibrationOf(camera, T_camera_lidar); }
+
 SequenceInfo readSequenceInfo(const std::string& yaml_path) {
   const YamlConfig root = YamlConfig::loadFile(yaml_path);
-  const std::string format = root.at("format").asString();
-  if (format != kSequenceFormat)
-    root.at("format").fail(fmt::format("expected '{}', got '{}'", kSequenceFormat, format));
+  requireFormat(root, kSequenceFormat);
   SequenceInfo info;
   info.name = root.getString("name", "");
   if (const auto cam = root.find("camera")) info.camera = parseCameraInfo(*cam);
@@ -99,16 +111,7 @@ SequenceInfo readSequenceInfo(const std::string& yaml_path) {
   } else if (info.camera && info.lidar) {
     root.at("extrinsics");  // throws: a camera and a LiDAR need their extrinsics
   }
-  if (const auto gt = root.find("groundtruth")) {
-    const std::string frame = gt->at("frame").asString();
-    if (frame == "camera") {
-      info.groundtruth_frame = GroundTruthFrame::kCamera;
-    } else if (frame == "lidar") {
-      info.groundtruth_frame = GroundTruthFrame::kLidar;
-    } else {
-      gt->at("frame").fail("expected 'camera' or 'lidar', got '" + frame + "'");
-    }
-  }
+  if (const auto gt = root.find("groundtruth")) info.groundtruth_frame = parseGroundTruthFrame(gt->at("frame"));
   return info;
 }
 

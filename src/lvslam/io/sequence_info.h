@@ -44,6 +44,12 @@ class YamlConfig;
 // to the closest rotation) of sequence.yaml; also used by sensor presets.
 CameraInfo parseCameraInfo(const YamlConfig& node);
 Eigen::Isometry3d parseTransformMatrix(const YamlConfig& node);
+// Throws lvslam::Error naming the file and key unless root's `format` is `expected`.
+void requireFormat(const YamlConfig& root, const char* expected);
+// The `groundtruth.frame` value ("camera" or "lidar").
+GroundTruthFrame parseGroundTruthFrame(const YamlConfig& frame);
+// The camera model (when there is a camera) and the extrinsic.
+Calibration calibrationOf(const std::optional<CameraInfo>& camera, const Eigen::Isometry3d& T_camera_lidar);
 
 // Parses and validates; throws lvslam::Error(file, "key '...': why").
 SequenceInfo readSequenceInfo(const std::string& yaml_path);

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "lvslam/visual/match/descriptor_distance.h"
+#include "lvslam/visual/match/unique_matches.h"
 
 namespace lvslam::visual {
 
@@ -30,19 +31,6 @@ struct Best {
            (second == std::numeric_limits<int>::max() || distance < c.ratio * second);
   }
 };
-
-std::vector<LineMatch> uniqueMatches(const std::vector<LineMatch>& matches, size_t frame_size) {
-  std::vector<int> owner(frame_size, -1);
-  for (size_t m = 0; m < matches.size(); ++m) {
-    int& o = owner[matches[m].index2];
-    if (o < 0 || matches[m].distance < matches[o].distance) o = static_cast<int>(m);
-  }
-  std::vector<LineMatch> out;
-  for (size_t m = 0; m < matches.size(); ++m) {
-    if (owner[matches[m].index2] == static_cast<int>(m)) out.push_back(matches[m]);
-  }
-  return out;
-}
 
 bool descriptorsUsable(const cv::Mat& d, size_t rows) {
   return d.rows == static_cast<int>(rows) && d.cols == 32 && d.type() == CV_8U;

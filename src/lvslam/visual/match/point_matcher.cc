@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "lvslam/visual/match/descriptor_distance.h"
+#include "lvslam/visual/match/unique_matches.h"
 
 namespace lvslam::visual {
 
@@ -32,20 +33,6 @@ Best bestCandidate(const uint8_t* query, const std::vector<int>& candidates, con
     }
   }
   return best;
-}
-
-// Keeps one match per frame keypoint (the closest) and drops gated ones.
-std::vector<PointMatch> uniqueMatches(std::vector<PointMatch> matches, size_t frame_size) {
-  std::vector<int> owner(frame_size, -1);
-  for (size_t m = 0; m < matches.size(); ++m) {
-    int& o = owner[matches[m].index2];
-    if (o < 0 || matches[m].distance < matches[o].distance) o = static_cast<int>(m);
-  }
-  std::vector<PointMatch> out;
-  for (size_t m = 0; m < matches.size(); ++m) {
-    if (owner[matches[m].index2] == static_cast<int>(m)) out.push_back(matches[m]);
-  }
-  return out;
 }
 
 // ORB-SLAM's rotation consistency: keep matches in the three most populated
