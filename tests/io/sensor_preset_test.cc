@@ -42,5 +42,21 @@ TEST(SensorPreset, ErrorsNameFileAndKey) {
   EXPECT_NE(testing::errorMessageOf([&] { findSensorPreset("no_such_preset"); }).find("no_such_preset"), std::string::npos);
 }
 
+// A typo in a preset would silently keep a default: it is an error naming the
+// file and the key, at any depth.
+TEST(SensorPreset, AnUnknownKeyIsAnErrorNamingFileAndKey) {
+  testing::TempDir dir;
+  dir.write("top.yaml", "format: lvslam-preset/1\nnmae: x\n");
+  const std::string top = testing::errorMessageOf([&] { loadSensorPreset(dir.file("top.yaml")); });
+  EXPECT_NE(top.find("top.yaml"), std::string::npos) << top;
+  EXPECT_NE(top.find("nmae"), std::string::npos) << top;
+  dir.write("deep.yaml", "format: lvslam-preset/1\nlidar:\n  rings: 32\n  rate: 10\n");
+  const std::string deep = testing::errorMessageOf([&] { loadSensorPreset(dir.file("deep.yaml")); });
+  EXPECT_NE(deep.find("rate"), std::string::npos) << deep;
+  EXPECT_NE(deep.find("lidar"), std::string::npos) << deep;
+  dir.write("topic.yaml", "format: lvslam-preset/1\ntopics:\n  imu: /imu\n");
+  EXPECT_NE(testing::errorMessageOf([&] { loadSensorPreset(dir.file("topic.yaml")); }).find("imu"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace lvslam

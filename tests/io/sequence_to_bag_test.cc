@@ -4,6 +4,8 @@
 #include "lvslam/io/sequence_to_bag.h"
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 
@@ -130,6 +132,31 @@ TEST(SequenceToBag, AFailedConversionLeavesNoBag) {
   EXPECT_THROW(writeSequenceBag(options), Error);
   EXPECT_FALSE(std::filesystem::exists(options.bag_path));
   EXPECT_FALSE(std::filesystem::exists(options.bag_path + ".partial"));
+}
+
+// A sequence may carry keys the format ignores; its preset must still load
+// (a preset refuses unknown keys), with the sequence's calibration.
+TEST(SequenceToBag, KeysASequenceMayCarryStayOutOfItsPreset) {
+  TempDir dir;
+  SequenceToBagOptions options;
+  options.sequence_dir = writeSequence(dir);
+  options.bag_path = dir.file("seq.bag");
+  const std::string yaml = options.sequence_dir + "/sequence.yaml";
+  std::string text;
+  {
+    std::ifstream in(yaml);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::size_t camera = text.find("camera:\n");
+  ASSERT_NE(camera, std::string::npos);
+  text.insert(camera + 8, "  exposure_ms: 12\n");
+  text += "recorded_by: a test\n";
+  std::ofstream(yaml) << text;
+  ASSERT_EQ(readSequenceInfo(yaml).camera->camera.width(), 8);  // the sequence ignores them
+  const SequenceToBagStats stats = writeSequenceBag(options);
+  const SensorPreset preset = loadSensorPreset(stats.preset_path);
+  ASSERT_TRUE(preset.camera.has_value());
+  EXPECT_EQ(preset.camera->camera.width(), 8);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "lvslam/io/sensor_preset.h"
 
 #include <filesystem>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -10,11 +11,36 @@
 
 namespace lvslam {
 
+const std::vector<std::string>& presetKeys(const std::string& block) {
+  static const std::map<std::string, std::vector<std::string>> keys{
+      {"", {"format", "name", "topics", "camera", "lidar", "extrinsics", "groundtruth"}},
+      {"topics", {"lidar", "camera"}},
+      {"camera", {"model", "width", "height", "intrinsics", "distortion", "rate_hz"}},
+      {"camera.distortion", {"model", "coeffs"}},
+      {"lidar", {"rings", "rate_hz"}},
+      {"extrinsics", {"T_camera_lidar"}},
+      {"groundtruth", {"frame"}}};
+  return keys.at(block);
+}
+
+namespace {
+
+void requireKnownPresetKeys(const YamlConfig& root) {
+  root.requireKnownKeys(presetKeys(""));
+  for (const char* block : {"topics", "camera", "lidar", "extrinsics", "groundtruth"})
+    if (const auto node = root.find(block)) node->requireKnownKeys(presetKeys(block));
+  if (const auto camera = root.find("camera"))
+    if (const auto distortion = camera->find("distortion")) distortion->requireKnownKeys(presetKeys("camera.distortion"));
+}
+
+}  // namespace
+
 Calibration SensorPreset::calibration() const { return calibrationOf(camera, T_camera_lidar); }
 
 SensorPreset loadSensorPreset(const std::string& path) {
   const YamlConfig root = YamlConfig::loadFile(path);
   requireFormat(root, kSensorPresetFormat);
+  requireKnownPresetKeys(root);
   SensorPreset preset;
   preset.name = root.getString("name", std::filesystem::path(path).stem().string());
   if (const auto topics = root.find("topics")) {

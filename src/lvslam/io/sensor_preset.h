@@ -5,6 +5,7 @@
 // documented at the top of config/m2dgr.yaml.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -27,7 +28,14 @@ struct SensorPreset {
   Calibration calibration() const;
 };
 
-// Parses and validates; throws lvslam::Error(file, "key '...': why").
+// The schema's keys of one block: "" (the top level), "topics", "camera",
+// "camera.distortion", "lidar", "extrinsics" or "groundtruth". A preset is
+// ours, not a recording's: the loader refuses any other key (a typo would
+// silently keep a default) and `convert to-bag` writes only these.
+const std::vector<std::string>& presetKeys(const std::string& block);
+
+// Parses and validates; throws lvslam::Error(file, "key '...': why"), also
+// for a key the schema does not have.
 SensorPreset loadSensorPreset(const std::string& path);
 
 // A preset file path, or the name of one in the project's config/ folder

@@ -109,11 +109,12 @@ void writePreset(const SequenceToBagOptions& options, const std::string& path) {
   preset["name"] = sequence["name"] ? sequence["name"].as<std::string>() : fs::path(options.sequence_dir).filename().string();
   preset["topics"]["lidar"] = options.lidar_topic;
   preset["topics"]["camera"] = cameraTopicOf(options);
-  for (const char* key : {"camera", "extrinsics", "groundtruth"})
-    if (sequence[key]) preset[key] = sequence[key];
-  if (const YAML::Node lidar = sequence["lidar"]) {
-    for (const char* key : {"rings", "rate_hz"})
-      if (lidar[key]) preset["lidar"][key] = lidar[key];
+  // Only the preset schema's keys: a sequence may carry others (ignored there, refused in a preset).
+  for (const char* block : {"camera", "lidar", "extrinsics", "groundtruth"}) {
+    const YAML::Node from = sequence[block];
+    if (!from || !from.IsMap()) continue;
+    for (const std::string& key : presetKeys(block))
+      if (from[key]) preset[block][key] = from[key];
   }
   std::ofstream out(path);
   out << "# Sensor preset of the bag beside it, written by `lvslam convert to-bag` from " << yaml_path << "\n"
