@@ -36,11 +36,11 @@ visual::VisualFrameResult healthyResult(double t, int map_id, const Eigen::Isome
   r.T_world_camera = T_map_camera;
   r.map_id = map_id;
   r.metric = true;
-  r.tracked_points = 150;
-  r.tracked_lines = 20;
-  r.inlier_ratio = 0.9;
-  r.brightness = 120.0;
-  r.contrast = 40.0;
+  r.health.tracked_points = 150;
+  r.health.tracked_lines = 20;
+  r.health.inlier_ratio = 0.9;
+  r.health.brightness = 120.0;
+  r.health.contrast = 40.0;
   return r;
 }
 
@@ -328,8 +328,8 @@ FusedScenario blackoutScenario(std::size_t frames) {
     } else if (j < s.blackout_end) {
       r.state = visual::TrackingState::kLost;
       r.map_id = 0;
-      r.brightness = 0.0;  // black image
-      r.contrast = 0.0;
+      r.health.brightness = 0.0;  // black image
+      r.health.contrast = 0.0;
     } else {
       r = healthyResult(t, 1, driftingVisual(map1, j));
     }
@@ -408,9 +408,9 @@ TEST(AssembleOutput, FusedUsesTheFirstVisualMapFromItsFirstHealthyFrame) {
     visual::VisualFrameResult& r = s.records.visual[j].result;
     r.state = visual::TrackingState::kInitializing;
     r.pose_valid = false;
-    r.tracked_points = 0;
-    r.tracked_lines = 0;
-    r.inlier_ratio = 0.0;
+    r.health.tracked_points = 0;
+    r.health.tracked_lines = 0;
+    r.health.inlier_ratio = 0.0;
   }
   SystemConfig config = paperOutputConfig();
   config.detection.frames_to_recover = 6;

@@ -54,11 +54,11 @@ TEST(Refinement, FusedRefinementTakesVisionAsTracked) {
     visual.result.pose_valid = true;
     visual.result.metric = true;
     visual.result.T_world_camera = T;
-    visual.result.pose_information = Matrix6d(information.asDiagonal());
-    visual.result.tracked_points = 300;
-    visual.result.inlier_ratio = 0.9;
-    visual.result.brightness = 120.0;
-    visual.result.contrast = 50.0;
+    visual.result.fusion.pose_information = Matrix6d(information.asDiagonal());
+    visual.result.health.tracked_points = 300;
+    visual.result.health.inlier_ratio = 0.9;
+    visual.result.health.brightness = 120.0;
+    visual.result.health.contrast = 50.0;
     Eigen::Isometry3d T_final = T;
     T_final.translation().y() += 0.02 * j;
     visual.T_world_camera_final = T_final;

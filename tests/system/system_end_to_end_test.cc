@@ -148,7 +148,7 @@ TEST(SystemEndToEnd, FusedModeUsesVisionAndStaysAccurate) {
     if (!v.result.keyframe) continue;
     ++keyframes;
     keyframes_with_depths += v.keypoint_depths > 0 ? 1 : 0;
-    EXPECT_LE(v.keypoint_depths, static_cast<std::size_t>(v.result.keypoints));
+    EXPECT_LE(v.keypoint_depths, static_cast<std::size_t>(v.result.health.keypoints));
   }
   EXPECT_GT(keyframes_with_depths, keyframes * 8 / 10);
   // The estimator: where vision is admitted, the LiDAR's factor is there too.

@@ -166,7 +166,7 @@ TEST_F(VisualSlamBadInputTest, SaturatedFramesAreLostThenRelocalisedIntoTheOldMa
   const VisualSlamConfig config;
   const SpoiltRun r = runSpoilt(config, saturated);
   expectLostAndMapKept(r);
-  for (const VisualFrameResult& result : r.spoilt) EXPECT_GT(result.brightness, config.usability.max_brightness);
+  for (const VisualFrameResult& result : r.spoilt) EXPECT_GT(result.health.brightness, config.usability.max_brightness);
   expectPosesInTheOldMap(r);
 }
 
@@ -177,7 +177,7 @@ TEST_F(VisualSlamBadInputTest, SaturatedFramesPastTheRelocalisationWindowStartAN
   config.relocalize_frames = 2;
   const SpoiltRun r = runSpoilt(config, saturated);
   expectLostAndMapKept(r);
-  for (const VisualFrameResult& result : r.spoilt) EXPECT_GT(result.brightness, config.usability.max_brightness);
+  for (const VisualFrameResult& result : r.spoilt) EXPECT_GT(result.health.brightness, config.usability.max_brightness);
   ASSERT_FALSE(r.after.empty());
   // The old map is given up at once; the frame's depths start the new one.
   EXPECT_EQ(r.after.front().state, TrackingState::kTracking);
@@ -196,8 +196,8 @@ TEST_F(VisualSlamBadInputTest, FeaturelessFramesAreLostThenRelocalisedIntoTheOld
     const SpoiltRun r = runSpoilt(config, spoil);
     expectLostAndMapKept(r);
     for (const VisualFrameResult& result : r.spoilt) {
-      EXPECT_LT(result.keypoints, config.min_keypoints);
-      EXPECT_EQ(result.contrast >= config.usability.min_contrast, enough_contrast);
+      EXPECT_LT(result.health.keypoints, config.min_keypoints);
+      EXPECT_EQ(result.health.contrast >= config.usability.min_contrast, enough_contrast);
     }
     expectPosesInTheOldMap(r);
   }
@@ -225,10 +225,10 @@ TEST_F(VisualSlamBadInputTest, BlurredFramesAreTrackedWithinTheirStatedUncertain
       EXPECT_EQ(result.pose_valid, c.tracked);
       EXPECT_EQ(result.state, c.tracked ? TrackingState::kTracking : TrackingState::kLost);
       EXPECT_EQ(result.map_id, 0);
-      EXPECT_EQ(result.keypoints >= config.min_keypoints, c.enough_keypoints);
-      EXPECT_GE(result.contrast, config.usability.min_contrast);
+      EXPECT_EQ(result.health.keypoints >= config.min_keypoints, c.enough_keypoints);
+      EXPECT_GE(result.health.contrast, config.usability.min_contrast);
       if (!c.tracked) {
-        EXPECT_LT(result.tracked_points, config.min_tracked);
+        EXPECT_LT(result.health.tracked_points, config.min_tracked);
       }
     }
     if (!c.tracked) expectLostAndMapKept(r);
@@ -238,8 +238,8 @@ TEST_F(VisualSlamBadInputTest, BlurredFramesAreTrackedWithinTheirStatedUncertain
     ASSERT_EQ(r.spoilt_estimate.size(), c.tracked ? r.spoilt.size() : 0u);
     for (std::size_t k = 0; k < r.spoilt_estimate.size(); ++k) {
       SCOPED_TRACE("blurred frame " + std::to_string(k));
-      ASSERT_TRUE(r.spoilt[k].pose_information.has_value());
-      const Eigen::Matrix3d position_covariance = r.spoilt[k].pose_information->inverse().topLeftCorner<3, 3>() *
+      ASSERT_TRUE(r.spoilt[k].fusion.pose_information.has_value());
+      const Eigen::Matrix3d position_covariance = r.spoilt[k].fusion.pose_information->inverse().topLeftCorner<3, 3>() *
                                                   (kEstimatorPixelSigma * kEstimatorPixelSigma);
       const double error = (sharp.ate.T_gt_est.apply(r.spoilt_estimate[k].T_world_frame.translation()) -
                             r.spoilt_truth[k].T_world_frame.translation())

@@ -52,7 +52,7 @@ TEST_F(VisualSlamTest, WithDepthTheFirstFrameStartsAMetricMapAndTracksWithinCent
   run(slam, 1, frames_->size(), estimate, truth, &results);
   EXPECT_TRUE(std::all_of(results.begin(), results.end(), [](const auto& r) { return r.pose_valid && r.metric; }));
   EXPECT_EQ(slam.state(), TrackingState::kTracking);
-  EXPECT_GT(results.back().tracked_points, 50);
+  EXPECT_GT(results.back().health.tracked_points, 50);
   EXPECT_GT(slam.map().keyframes().size(), 2u);
   EXPECT_GT(slam.map().lines().size(), 0u);
   EXPECT_LT(se3Accuracy(truth, estimate).ate.stats.rmse, 0.05);
@@ -101,7 +101,7 @@ TEST_F(VisualSlamTest, BlackFramesLoseTrackingThenANewMapStarts) {
     const VisualFrameResult r = slam.track(black);
     EXPECT_EQ(r.state, TrackingState::kLost);
     EXPECT_FALSE(r.pose_valid);
-    EXPECT_LT(r.brightness, 1.0);
+    EXPECT_LT(r.health.brightness, 1.0);
   }
   Trajectory after, after_truth;
   run(slam, half, frames_->size(), after, after_truth);
@@ -192,7 +192,7 @@ TEST_F(VisualSlamTest, KeypointDepthsAreStoredOnKeyframesAndMakePoints) {
     if (slam.needsDepthHints()) slam.setDepthHints(depthHints(f.depth));
     const VisualFrameResult r = slam.track(f.image);
     const std::vector<Eigen::Vector2d> pixels = slam.keypointPixels();
-    ASSERT_EQ(pixels.size(), static_cast<size_t>(r.keypoints));
+    ASSERT_EQ(pixels.size(), static_cast<size_t>(r.health.keypoints));
     EXPECT_THROW(slam.setKeypointDepths(std::vector<double>(pixels.size() + 1, 2.0)), Error);
     EXPECT_EQ(slam.currentIsKeyframe(), r.keyframe);
     std::vector<double> depths;
@@ -249,8 +249,8 @@ TEST_F(VisualSlamTest, TrackingAnExtractedImageEqualsTrackingTheImage) {
     const VisualFrameResult a = whole.track(f.image);
     const VisualFrameResult b = split.track(extractImage(extractor, f.image));
     ASSERT_EQ(a.pose_valid, b.pose_valid) << "frame " << i;
-    EXPECT_EQ(a.keypoints, b.keypoints);
-    EXPECT_EQ(a.brightness, b.brightness);
+    EXPECT_EQ(a.health.keypoints, b.health.keypoints);
+    EXPECT_EQ(a.health.brightness, b.health.brightness);
     if (!a.pose_valid) continue;
     ++posed;
     EXPECT_TRUE(a.T_world_camera.isApprox(b.T_world_camera, 1e-12)) << "frame " << i;

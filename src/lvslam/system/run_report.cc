@@ -38,16 +38,16 @@ std::string visualJson(const VisualFrameRecord& v) {
       .addRaw("pose", r.pose_valid ? "true" : "false")
       .addNumber("map_id", r.map_id)
       .addRaw("keyframe", r.keyframe ? "true" : "false")
-      .addNumber("keypoints", r.keypoints)
-      .addNumber("segments", r.segments)
-      .addNumber("tracked_points", r.tracked_points)
-      .addNumber("tracked_lines", r.tracked_lines)
-      .addNumber("inlier_ratio", r.inlier_ratio)
-      .addNumber("brightness", r.brightness)
-      .addNumber("contrast", r.contrast)
+      .addNumber("keypoints", r.health.keypoints)
+      .addNumber("segments", r.health.segments)
+      .addNumber("tracked_points", r.health.tracked_points)
+      .addNumber("tracked_lines", r.health.tracked_lines)
+      .addNumber("inlier_ratio", r.health.inlier_ratio)
+      .addNumber("brightness", r.health.brightness)
+      .addNumber("contrast", r.health.contrast)
       .addNumber("fusion_lines_added", v.fusion_lines_added)
       .addCount("keypoint_depths", v.keypoint_depths);  // from the raw scans
-  if (r.anchor_time) o.addNumber("landmark_age_s", r.timestamp - *r.anchor_time);  // map reuse shows here
+  if (r.fusion.anchor_time) o.addNumber("landmark_age_s", r.timestamp - *r.fusion.anchor_time);  // map reuse shows here
   return o.str();
 }
 

@@ -110,7 +110,7 @@ class FusedOnline final : public OnlineOutput {
     if (admitted == OutputSource::kVisual) visual = visualInput(v->result);
     const FusedFrameOutput out = estimator_.add(v->t, lidarInput(*l), visual);
     camera_nodes_.push_back(out.camera_node);
-    if (v->result.T_world_odom) placements_[v->result.map_id] = v->result.T_world_odom->inverse();
+    if (v->result.fusion.T_world_odom) placements_[v->result.map_id] = v->result.fusion.T_world_odom->inverse();
     frame.T_world_camera = out.T_world_camera;
     if (out.visual_used) frame.source = OutputSource::kVisual;
     frame.fused = out.visual_used && out.lidar_used;
@@ -142,12 +142,12 @@ class FusedOnline final : public OnlineOutput {
   // The frame's visual pose in its map as tracked, with the map's
   // corrections since the last frame.
   static std::optional<VisualFrameInput> visualInput(const visual::VisualFrameResult& r) {
-    if (!r.pose_valid || !r.pose_information) return std::nullopt;
+    if (!r.pose_valid || !r.fusion.pose_information) return std::nullopt;
     VisualFrameInput in;
     in.map_id = r.map_id;
     in.T_map_camera = r.T_world_camera;
-    in.information = *r.pose_information;
-    in.T_new_old = r.T_new_old;
+    in.information = *r.fusion.pose_information;
+    in.T_new_old = r.fusion.T_new_old;
     in.initial_view = r.initial_reference;
     return in;
   }
@@ -166,11 +166,11 @@ VisualHealth healthOf(const VisualFrameRecord& record) {
   VisualHealth h;
   h.t = record.t;
   h.state = stateOf(r.state);
-  h.tracked_points = r.tracked_points;
-  h.tracked_lines = r.tracked_lines;
-  h.inlier_ratio = r.inlier_ratio;
-  h.brightness = r.brightness;
-  h.contrast = r.contrast;
+  h.tracked_points = r.health.tracked_points;
+  h.tracked_lines = r.health.tracked_lines;
+  h.inlier_ratio = r.health.inlier_ratio;
+  h.brightness = r.health.brightness;
+  h.contrast = r.health.contrast;
   h.metric = !r.pose_valid || r.metric;
   return h;
 }

@@ -27,6 +27,33 @@ struct VisualReplayData {
   TrackedObservations observations;
 };
 
+// What the detection module reads of a frame (its paper's health checks).
+struct FrameHealth {
+  int tracked_points = 0, tracked_lines = 0;
+  double inlier_ratio = 0.0;  // inliers / matches of the last pose optimisation
+  double brightness = 0.0, contrast = 0.0;
+  int keypoints = 0, segments = 0;
+};
+
+// What the online estimator (system/online/fused_estimator.h) reads besides
+// the pose.
+struct VisualFusionInfo {
+  // The tracker's information on the pose (PoseOptimizationResult::information,
+  // at 1 px per ORB level 0; none when the pose did not come from tracking).
+  std::optional<Matrix6d> pose_information;
+  // The map's alignment with the LiDAR odometry (VisualMap::T_world_odom).
+  std::optional<Eigen::Isometry3d> T_world_odom;
+  // When the landmarks the pose rests on were mapped (medianFirstSeen of its
+  // inlier points); with a pose_information only.
+  std::optional<double> anchor_time;
+  // The map was pulled onto the LiDAR odometry in this frame
+  // (config.visual.map_correction): earlier poses of this map are, in the
+  // corrected map, T_new_old * T_world_camera (the newest keyframe's move).
+  std::optional<Eigen::Isometry3d> T_new_old;
+};
+
+// One frame: its pose (the fields below), its health, what fusion reads, and
+// the replay data the after-run refinement may ask for.
 struct VisualFrameResult {
   double timestamp = 0.0;
   TrackingState state = TrackingState::kInitializing;
@@ -39,24 +66,8 @@ struct VisualFrameResult {
   // (keyframe initial_reference_keyframe).
   std::optional<StampedPose> initial_reference;
   int initial_reference_keyframe = -1;
-  // Figures for the detection module.
-  int tracked_points = 0, tracked_lines = 0;
-  double inlier_ratio = 0.0;  // inliers / matches of the last pose optimisation
-  double brightness = 0.0, contrast = 0.0;
-  int keypoints = 0, segments = 0;
-  // The map was pulled onto the LiDAR odometry in this frame
-  // (config.visual.map_correction): earlier poses of this map are, in the
-  // corrected map, T_new_old * T_world_camera (the newest keyframe's move).
-  std::optional<Eigen::Isometry3d> T_new_old;
-  // For the online estimator (system/online/fused_estimator.h): the
-  // tracker's information on it (PoseOptimizationResult::information, at
-  // 1 px per ORB level 0; none when the pose did not come from tracking),
-  // and the map's alignment with the LiDAR odometry (VisualMap::T_world_odom).
-  std::optional<Matrix6d> pose_information;
-  std::optional<Eigen::Isometry3d> T_world_odom;
-  // When the landmarks this pose rests on were mapped (medianFirstSeen of
-  // its inlier points); with a pose_information only.
-  std::optional<double> anchor_time;
+  FrameHealth health;
+  VisualFusionInfo fusion;
   // For the after-run refinement only (system/final_visual_poses.h).
   VisualReplayData replay;
 };

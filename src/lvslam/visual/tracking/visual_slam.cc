@@ -185,13 +185,13 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   VisualFrameResult result;
   result.timestamp = image.timestamp;
   const ImageStatistics stats = image.stats;
-  result.brightness = stats.brightness;
-  result.contrast = stats.contrast;
+  result.health.brightness = stats.brightness;
+  result.health.contrast = stats.contrast;
   current = TrackedFrame{};
   current.features = std::move(image.features);
-  result.keypoints = static_cast<int>(current.features.points.size());
-  result.segments = static_cast<int>(current.features.lines.size());
-  const bool usable = isUsable(stats, config.usability) && result.keypoints >= config.min_keypoints;
+  result.health.keypoints = static_cast<int>(current.features.points.size());
+  result.health.segments = static_cast<int>(current.features.lines.size());
+  const bool usable = isUsable(stats, config.usability) && result.health.keypoints >= config.min_keypoints;
   if (!usable) {
     if (state != TrackingState::kInitializing) loseTracking();
     reference.reset();  // an unusable frame breaks the initialisation pair
@@ -210,17 +210,17 @@ VisualFrameResult VisualSlam::Impl::track(ExtractedImage image, std::vector<Pixe
   result.metric = metric;
   result.pose_valid = current_has_pose;
   if (current_has_pose) result.T_world_camera = current.T_camera_world.inverse();
-  result.tracked_points = current.point_inliers;
-  result.tracked_lines = current.line_inliers;
+  result.health.tracked_points = current.point_inliers;
+  result.health.tracked_lines = current.line_inliers;
   result.keyframe = current_keyframe >= 0;
-  result.T_new_old = map_correction;
+  result.fusion.T_new_old = map_correction;
   attachLidarPoses();
   if (current_has_pose && current.information) {
-    result.pose_information = current.information;
-    result.anchor_time = medianFirstSeen(map, current.point_landmark);
+    result.fusion.pose_information = current.information;
+    result.fusion.anchor_time = medianFirstSeen(map, current.point_landmark);
     if (!result.keyframe) result.replay.observations = trackedObservations(current);
   }
-  result.T_world_odom = map.T_world_odom();
+  result.fusion.T_world_odom = map.T_world_odom();
   if (current_has_pose && map.hasKeyframe(reference_keyframe)) {
     result.replay.reference_keyframe = reference_keyframe;
     result.replay.T_keyframe_camera = map.keyframe(reference_keyframe).T_camera_world * current.T_camera_world.inverse();
@@ -280,7 +280,7 @@ void VisualSlam::Impl::initialize(const std::vector<double>& depths, VisualFrame
   current_keyframe = built->keyframe2;
   result.initial_reference = StampedPose{reference_time, map.keyframe(built->keyframe1).T_camera_world.inverse()};
   result.initial_reference_keyframe = built->keyframe1;
-  result.inlier_ratio = static_cast<double>(init->num_triangulated) / std::max<size_t>(1, pairs.size());
+  result.health.inlier_ratio = static_cast<double>(init->num_triangulated) / std::max<size_t>(1, pairs.size());
   // Constant velocity per frame: the initial motion spread over its frames.
   const int frames = std::max(1, frame_index - reference_frame);
   motion = {expSE3(logSE3(k2.T_camera_world) / frames), (current.features.timestamp - reference_time) / frames};
@@ -294,7 +294,7 @@ bool VisualSlam::Impl::initializeFromDepths(const std::vector<double>& depths, V
   metric = true;
   startTracking(map.keyframe(built->keyframe1), *built);
   current_keyframe = built->keyframe1;
-  result.inlier_ratio = 1.0;  // every point is seen where it was made
+  result.health.inlier_ratio = 1.0;  // every point is seen where it was made
   motion = ConstantVelocity{};
   return true;
 }
@@ -350,7 +350,7 @@ bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
   if (!tracked.success)  // fall back: no motion, wider window
     tracked = trackLocalMap(map, local, T_last, K, config.recovery_radius_scale, tracker, current);
   if (!tracked.success) return false;
-  result.inlier_ratio = inlierRatio(current.point_inliers, current.line_inliers, tracked.matches);
+  result.health.inlier_ratio = inlierRatio(current.point_inliers, current.line_inliers, tracked.matches);
   last_points = observedLandmarks(current.point_landmark);
   mapper.countTracking(tracked.visible_points, last_points, tracked.visible_lines,
                        observedLandmarks(current.line_landmark));
@@ -435,7 +435,7 @@ bool VisualSlam::Impl::relocalize(VisualFrameResult& result) {
   current_has_pose = true;
   lost_frames = 0;
   last_points = observedLandmarks(current.point_landmark);
-  result.inlier_ratio = inlierRatio(current.point_inliers, current.line_inliers, tracked->matches);
+  result.health.inlier_ratio = inlierRatio(current.point_inliers, current.line_inliers, tracked->matches);
   return true;
 }
 
