@@ -31,15 +31,25 @@ const Eigen::Isometry3d& LoopCorrection::atTime(double t) const {
   return corrections_[k];
 }
 
+std::vector<OdometryOffset> odometryOffsets(const Trajectory& refined, const Trajectory& odometry) {
+  std::vector<OdometryOffset> offsets;
+  std::size_t o = 0;
+  for (const StampedPose& pose : refined) {
+    while (o < odometry.size() && odometry[o].t < pose.t - kSameTime) ++o;
+    if (o < odometry.size() && std::abs(odometry[o].t - pose.t) <= kSameTime)
+      offsets.push_back({pose.t, pose.T_world_frame * odometry[o].T_world_frame.inverse()});
+  }
+  return offsets;
+}
+
 Trajectory correctTrajectory(const Trajectory& refined, const Trajectory& odometry, const LoopCorrection& correction) {
+  const std::vector<OdometryOffset> offsets = odometryOffsets(refined, odometry);
   Trajectory corrected;
   corrected.reserve(refined.size());
   Eigen::Isometry3d T_world_odom = Eigen::Isometry3d::Identity();
+  std::size_t next = 0;
   for (const StampedPose& pose : refined) {
-    const auto at = std::lower_bound(odometry.begin(), odometry.end(), pose.t - kSameTime,
-                                     [](const StampedPose& p, double t) { return p.t < t; });
-    if (at != odometry.end() && std::abs(at->t - pose.t) <= kSameTime)
-      T_world_odom = pose.T_world_frame * at->T_world_frame.inverse();
+    while (next < offsets.size() && offsets[next].t <= pose.t) T_world_odom = offsets[next++].T_world_odom;
     const Eigen::Isometry3d T_odom_sensor = T_world_odom.inverse() * pose.T_world_frame;
     corrected.push_back({pose.t, T_world_odom * correction.atTime(pose.t) * T_odom_sensor});
   }

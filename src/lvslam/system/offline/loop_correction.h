@@ -31,6 +31,15 @@ class LoopCorrection {
   std::vector<Eigen::Isometry3d> corrections_;
 };
 
+// T_world_odom = T_world_sensor T_odom_sensor^-1 at each time stamp of
+// `refined` that `odometry` (the same sensor's odometry) also has, within a
+// microsecond; in time order.
+struct OdometryOffset {
+  double t = 0.0;
+  Eigen::Isometry3d T_world_odom = Eigen::Isometry3d::Identity();
+};
+std::vector<OdometryOffset> odometryOffsets(const Trajectory& refined, const Trajectory& odometry);
+
 // Each pose of `refined` moved by the correction at its time, applied in the
 // odometry frame: T' = T_world_odom D T_odom_sensor, with T_world_odom =
 // T T_odom_sensor^-1 from `odometry` (the same sensor's odometry pose at

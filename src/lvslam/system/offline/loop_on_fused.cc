@@ -1,30 +1,13 @@
 #include "lvslam/system/offline/loop_on_fused.h"
 
 #include <algorithm>
-#include <cmath>
+#include <iterator>
+
+#include "lvslam/system/offline/loop_correction.h"
 
 namespace lvslam::system {
 
 namespace {
-
-constexpr double kSameTime = 1e-6;  // seconds
-
-struct OdometryOffset {
-  double t = 0.0;
-  Eigen::Isometry3d T_world_odom = Eigen::Isometry3d::Identity();
-};
-
-// T_world_odom at every frame both trajectories pose.
-std::vector<OdometryOffset> offsets(const Trajectory& refined, const Trajectory& lidar_odometry) {
-  std::vector<OdometryOffset> out;
-  std::size_t o = 0;
-  for (const StampedPose& pose : refined) {
-    while (o < lidar_odometry.size() && lidar_odometry[o].t < pose.t - kSameTime) ++o;
-    if (o < lidar_odometry.size() && std::abs(lidar_odometry[o].t - pose.t) <= kSameTime)
-      out.push_back({pose.t, pose.T_world_frame * lidar_odometry[o].T_world_frame.inverse()});
-  }
-  return out;
-}
 
 const OdometryOffset& nearest(const std::vector<OdometryOffset>& offsets, double t) {
   const auto after = std::lower_bound(offsets.begin(), offsets.end(), t,
@@ -40,7 +23,7 @@ std::optional<loop::LoopClosureResult> loopOnFusedTrajectory(const loop::LoopClo
                                                              const Trajectory& refined,
                                                              const Trajectory& lidar_odometry,
                                                              const loop::LoopClosureConfig& config) {
-  const std::vector<OdometryOffset> at_frames = offsets(refined, lidar_odometry);
+  const std::vector<OdometryOffset> at_frames = odometryOffsets(refined, lidar_odometry);
   if (at_frames.empty()) return std::nullopt;
   std::vector<Eigen::Isometry3d> keyframes;
   for (std::size_t k = 0; k < live.keyframe_times.size(); ++k)
