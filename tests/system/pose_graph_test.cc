@@ -1,9 +1,14 @@
 // The relative-pose graph of the online estimator against closed forms.
 #include "lvslam/system/online/pose_graph.h"
 
+#include <array>
+
+#include <ceres/manifold.h>
+#include <ceres/product_manifold.h>
 #include <gtest/gtest.h>
 
 #include "lvslam/system/online/pose_information.h"
+#include "lvslam/system/online/relative_pose_cost.h"
 
 namespace lvslam::system {
 namespace {
@@ -94,6 +99,56 @@ TEST(PoseGraph, FactorErrorIsTheRightPerturbation) {
   std::vector<PoseNode> nodes{{Eigen::Isometry3d::Identity(), true}, {T * expSE3(xi), false}};
   const PoseFactor f{0, 1, T, Matrix6d::Identity(), FactorSource::kVisual};
   EXPECT_LT((factorError(f, nodes) - xi).norm(), 1e-6);
+}
+
+// The written-out Jacobians against central differences through Ceres' own
+// manifold (translation, then EigenQuaternionManifold), including a
+// measurement more than half a turn from the poses' relative rotation,
+// where the residual takes the quaternion's other sign.
+TEST(PoseGraph, RelativePoseCostJacobiansMatchNumericOnesOnTheManifold) {
+  Eigen::Isometry3d T_a = translation(0.4, -1.2, 2.0), T_b = translation(-0.3, 0.8, 1.1), Z = translation(0.5, 0.1, -0.7);
+  T_a.linear() = expSO3(Eigen::Vector3d(0.3, -0.5, 0.9));
+  T_b.linear() = expSO3(Eigen::Vector3d(-0.7, 0.2, 0.4));
+  Matrix6d L = Matrix6d::Identity();
+  L.block<3, 3>(0, 3) = 0.3 * Eigen::Matrix3d::Ones();
+  L.diagonal() << 10.0, 20.0, 5.0, 50.0, 40.0, 30.0;
+  for (const double turn : {0.2, 2.9}) {
+    Z.linear() = expSO3(Eigen::Vector3d(turn, -0.1, 0.2));
+    const RelativePoseCost cost(Z, L);
+    const auto block = [](const Eigen::Isometry3d& T) {
+      const Eigen::Quaterniond q(T.linear());
+      return std::array<double, 7>{T.translation().x(), T.translation().y(), T.translation().z(),
+                                   q.x(), q.y(), q.z(), q.w()};
+    };
+    std::array<std::array<double, 7>, 2> x{block(T_a), block(T_b)};
+    std::array<Eigen::Matrix<double, 6, 7, Eigen::RowMajor>, 2> J_ambient;
+    Vector6d r;
+    const double* params[2] = {x[0].data(), x[1].data()};
+    double* jacobians[2] = {J_ambient[0].data(), J_ambient[1].data()};
+    ASSERT_TRUE(cost.Evaluate(params, r.data(), jacobians));
+    const ceres::ProductManifold<ceres::EuclideanManifold<3>, ceres::EigenQuaternionManifold> manifold;
+    for (int k = 0; k < 2; ++k) {
+      Eigen::Matrix<double, 7, 6, Eigen::RowMajor> P;
+      ASSERT_TRUE(manifold.PlusJacobian(x[k].data(), P.data()));
+      const Matrix6d analytic = J_ambient[k] * P;
+      Matrix6d numeric;
+      const double h = 1e-6;
+      for (int j = 0; j < 6; ++j) {
+        Vector6d r_plus, r_minus;
+        for (const double sign : {1.0, -1.0}) {
+          Vector6d delta = Vector6d::Zero();
+          delta(j) = sign * h;
+          auto moved = x;
+          ASSERT_TRUE(manifold.Plus(x[k].data(), delta.data(), moved[k].data()));
+          const double* moved_params[2] = {moved[0].data(), moved[1].data()};
+          ASSERT_TRUE(cost.Evaluate(moved_params, (sign > 0 ? r_plus : r_minus).data(), nullptr));
+        }
+        numeric.col(j) = (r_plus - r_minus) / (2.0 * h);
+      }
+      EXPECT_LT((analytic - numeric).norm(), 1e-6 * numeric.norm()) << "turn " << turn << " block " << k
+                                                                      << "\n" << analytic << "\n\n" << numeric;
+    }
+  }
 }
 
 TEST(PoseInformation, LidarInformationMovesToTheCameraFrameByTheAdjoint) {

@@ -8,7 +8,6 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
-#include <ceres/autodiff_cost_function.h>
 #include <ceres/crs_matrix.h>
 #include <ceres/loss_function.h>
 #include <ceres/manifold.h>
@@ -16,7 +15,7 @@
 #include <ceres/product_manifold.h>
 #include <ceres/solver.h>
 
-#include "lvslam/core/relative_pose_error.h"
+#include "lvslam/system/online/relative_pose_cost.h"
 #include "lvslam/system/online/pose_information.h"
 
 namespace lvslam::system {
@@ -31,24 +30,6 @@ Matrix6d squareRoot(const Matrix6d& information) {
 }
 
 // Parameter blocks [t_world_camera (3), q_world_camera (x, y, z, w)].
-struct RelativePoseResidual {
-  RelativePoseResidual(const Eigen::Isometry3d& T_from_to, const Matrix6d& information)
-      : t_z(T_from_to.translation()), q_z(T_from_to.linear()), sqrt_information(squareRoot(information)) {}
-
-  template <typename T>
-  bool operator()(const T* a, const T* b, T* residual) const {
-    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> t_a(a), t_b(b);
-    const Eigen::Map<const Eigen::Quaternion<T>> q_a(a + 3), q_b(b + 3);
-    Eigen::Map<Eigen::Matrix<T, 6, 1>> r(residual);
-    r = sqrt_information.cast<T>() * relativePoseError<T>(t_a, q_a, t_b, q_b, t_z, q_z);
-    return true;
-  }
-
-  Eigen::Vector3d t_z;
-  Eigen::Quaterniond q_z;
-  Matrix6d sqrt_information;
-};
-
 using Block = std::array<double, 7>;
 using PoseManifold = ceres::ProductManifold<ceres::EuclideanManifold<3>, ceres::EigenQuaternionManifold>;
 
@@ -132,8 +113,7 @@ bool solvePoseGraph(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>&
   for (const PoseNode& node : nodes) blocks.push_back(toBlock(node.T_world_camera));
   ceres::Problem problem;
   for (const PoseFactor& f : factors) {
-    auto* cost = new ceres::AutoDiffCostFunction<RelativePoseResidual, 6, 7, 7>(
-        new RelativePoseResidual(f.T_from_to, f.information));
+    auto* cost = new RelativePoseCost(f.T_from_to, squareRoot(f.information));
     problem.AddResidualBlock(cost, new ceres::HuberLoss(config.huber_delta),
                              blocks[static_cast<std::size_t>(f.from)].data(),
                              blocks[static_cast<std::size_t>(f.to)].data());
