@@ -1,10 +1,12 @@
 #include "lvslam/fusion/fusion_framework.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "lvslam/core/se3.h"
+#include "lvslam/fusion/sphere_index.h"
 #include "fusion/test_rig.h"
 
 namespace lvslam::fusion {
@@ -81,6 +83,72 @@ TEST(FusionFramework, PoleBecomesALinearFusionLineAndFeedsItsDirectionBack) {
   ASSERT_EQ(r.lidar_updates.size(), 1u);
   EXPECT_GT(std::abs(r.lidar_updates[0].direction_world.z()), std::cos(0.5 * M_PI / 180.0));
   for (const auto id : r.lidar_updates[0].ids) EXPECT_GE(id, 100000u);  // pole points only
+}
+
+// The framework indexes only the features an image line can reach (its
+// view cone widened by the neighbour angle); every segment, those ending
+// in the image's corners included, must come out as with all features
+// indexed: the same reject reason or the same line to the last bit.
+void expectTheLinesOfAllFeatures(const std::vector<TimedFeature>& features) {
+  const PinholeCamera cam = testCamera();
+  const Eigen::Isometry3d T_world_lidar = Eigen::Isometry3d::Identity();
+  FusionFramework fusion(cam, cameraFromLidar(), FusionConfig{});
+  fusion.addLidarScan(features, {0.0, T_world_lidar, 0.1, T_world_lidar});
+  // Segments from each corner and edge midpoint to points across the image.
+  const double r = cam.width() - 0.5, b = cam.height() - 0.5;
+  const std::vector<Eigen::Vector2d> ends{{-0.5, -0.5}, {r, -0.5}, {-0.5, b}, {r, b}, {320.0, -0.5}, {-0.5, 240.0}};
+  std::vector<ImageSegment> segments;
+  for (const Eigen::Vector2d& a : ends)
+    for (const Eigen::Vector2d& to : {Eigen::Vector2d(320.0, 240.0), Eigen::Vector2d(100.0, 400.0), Eigen::Vector2d(600.0, 60.0)})
+      segments.push_back({a, to});
+  const FusionResult result = fusion.process(0.05, T_world_lidar, segments);
+
+  const std::vector<SphereFeature> all = fusion.featuresInCamera(T_world_lidar);
+  const SphereIndex index(all);
+  const LineReconstructor reconstructor(cam, FusionConfig{});
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    RejectReason why = RejectReason::kNone;
+    const auto line = reconstructor.reconstruct(segments[i], all, index, &why);
+    const auto found = std::find_if(result.lines.begin(), result.lines.end(),
+                                    [i](const FusionLine& l) { return l.segment_index == i; });
+    ASSERT_EQ(line.has_value(), found != result.lines.end()) << "segment " << i << " reason " << int(why);
+    if (!line) continue;
+    EXPECT_EQ(line->A, found->A) << "segment " << i;
+    EXPECT_EQ(line->B, found->B) << "segment " << i;
+    EXPECT_EQ(line->neighbours, found->neighbours) << "segment " << i;
+  }
+  EXPECT_GE(result.lines.size(), 1u);
+}
+
+TEST(FusionFramework, FeaturesOutsideTheViewChangeNoLine) {
+  std::vector<TimedFeature> room;  // 10 x 10 x 4 m round a static LiDAR, walls sampled every 25 cm
+  for (double a = -5.0; a <= 5.0; a += 0.25)
+    for (double z = -1.5; z <= 2.5; z += 0.25) {
+      const std::uint64_t id = room.size();
+      room.push_back({{5.0, a, z}, Eigen::Vector3d::UnitX(), FeatureShape::kPlanar, 0.05, id});
+      room.push_back({{-5.0, a, z}, Eigen::Vector3d::UnitX(), FeatureShape::kPlanar, 0.05, id + 1});
+      room.push_back({{a, 5.0, z}, Eigen::Vector3d::UnitY(), FeatureShape::kPlanar, 0.05, id + 2});
+      room.push_back({{a, -5.0, z}, Eigen::Vector3d::UnitY(), FeatureShape::kPlanar, 0.05, id + 3});
+    }
+  expectTheLinesOfAllFeatures(room);
+
+  // A pole 3 m away whose image runs from the centre through the top-left
+  // corner, sampled every 10 cm so that the corner's nearest sample lies
+  // just beyond the corner, outside the image's own cone.
+  const PinholeCamera cam = testCamera();
+  const Eigen::Isometry3d T_lidar_camera = cameraFromLidar().inverse();
+  const Eigen::Vector3d centre = 3.0 * cam.unproject({320.0, 240.0}).normalized();
+  const Eigen::Vector3d corner_ray = cam.unproject({-0.5, -0.5}).normalized();
+  const Eigen::Vector3d along = (3.0 * corner_ray - centre).normalized();
+  // Where the pole crosses the corner's ray: centre + s along = k corner_ray.
+  const Eigen::Vector3d n = corner_ray.cross(along);
+  const double s_corner = -corner_ray.cross(centre).dot(n) / n.squaredNorm();
+  std::vector<TimedFeature> pole;
+  for (double s = s_corner + 0.035 - 0.1 * 40; s <= s_corner + 0.2; s += 0.1)
+    if (s >= 0.0)
+      pole.push_back({T_lidar_camera * (centre + s * along), T_lidar_camera.linear() * along, FeatureShape::kLinear,
+                      0.05, pole.size()});
+  expectTheLinesOfAllFeatures(pole);
 }
 
 TEST(FusionFramework, PointDepthsComeFromTheNearestSurface) {
