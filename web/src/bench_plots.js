@@ -17,7 +17,8 @@ function benchCellText(cell, max, colour) {
   const extra = [];
   if (cell.refined_ate_rmse_m != null) extra.push('refined ' + fmtNum(cell.refined_ate_rmse_m, 4));
   if (cell.vision_share != null) extra.push(Math.round(100 * cell.vision_share) + ' % vision');
-  extra.push(fmtNum(cell.real_time_factor, 2) + 'x', fmtNum(cell.peak_rss_mib, 0) + ' MiB');
+  extra.push(`${fmtNum(cell.online_real_time_factor, 2)}x online / ${fmtNum(cell.real_time_factor, 2)}x whole run`,
+    fmtNum(cell.peak_rss_mib, 0) + ' MiB');
   td.append(el('div', { class: 'note', text: extra.join(', ') }));
   return td;
 }

@@ -10,7 +10,8 @@ function summarySection() {
   const s = section('Summary');
   const rows = [['mode', st.mode], ['images / scans', `${st.images} / ${st.scans}`],
     ['sequence', fmtNum(st.sequence_seconds, 1) + ' s']];
-  if (st.wall_seconds != null) rows.push(['wall time', fmtNum(st.wall_seconds, 1) + ' s'], ['real-time factor', fmtNum(st.real_time_factor, 2) + 'x'],
+  if (st.wall_seconds != null) rows.push(['wall time (online / whole run)', `${fmtNum(st.online_seconds, 1)} / ${fmtNum(st.wall_seconds, 1)} s`],
+    ['real-time factor (online / whole run)', `${fmtNum(st.online_real_time_factor, 2)}x / ${fmtNum(st.real_time_factor, 2)}x`],
     ['peak memory', fmtNum(st.peak_rss_mib, 0) + ' MiB']);
   if (st.latency_ms) rows.push(['online latency median / p95 / max', `${fmtNum(st.latency_ms.median, 1)} / ${fmtNum(st.latency_ms.p95, 1)} / ${fmtNum(st.latency_ms.max, 1)} ms`]);
   rows.push(['subsystem switches', st.switches], ['gated factors (LiDAR / visual)', `${st.gated_lidar_factors} / ${st.gated_visual_factors}`],

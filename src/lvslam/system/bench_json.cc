@@ -12,7 +12,7 @@ std::string cellJson(const BenchCell& c) {
   JsonObject o;
   if (!c.failure.empty()) return o.addString("failure", c.failure).str();
   o.addNumber("lost_fraction", c.lost_fraction).addNumber("real_time_factor", c.real_time_factor)
-      .addNumber("peak_rss_mib", c.peak_rss_mib);
+      .addNumber("online_real_time_factor", c.online_real_time_factor).addNumber("peak_rss_mib", c.peak_rss_mib);
   const std::pair<const char*, const std::optional<double>*> optional[] = {
       {"ate_mean_m", &c.ate_mean_m},     {"ate_rmse_m", &c.ate_rmse_m},
       {"refined_ate_rmse_m", &c.refined_ate_rmse_m}, {"vision_share", &c.vision_share},
@@ -24,7 +24,10 @@ std::string cellJson(const BenchCell& c) {
 
 std::string stringArray(const std::vector<std::string>& items) {
   std::string out = "[";
-  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? "," : "") + eval::jsonString(items[i]);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i) out += ',';
+    out += eval::jsonString(items[i]);  // appended apart: `"," + string` trips GCC 12's false -Wrestrict
+  }
   return out + "]";
 }
 

@@ -14,7 +14,8 @@ namespace lvslam::system {
 struct BenchCell {
   std::optional<double> ate_mean_m;  // none: no ground truth (or too few poses)
   double lost_fraction = 0.0;
-  double real_time_factor = 0.0;
+  double real_time_factor = 0.0;         // the whole run
+  double online_real_time_factor = 0.0;  // the online pipeline alone
   double peak_rss_mib = 0.0;
   std::string failure;  // the run did not finish: its error line
   // The families suite's figures (stats.json summary):

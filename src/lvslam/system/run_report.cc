@@ -130,6 +130,8 @@ std::string summaryJson(const RunSummary& s, const RunAccuracy& accuracy, bool t
   if (timings)
     o.addNumber("wall_seconds", s.wall_seconds)
         .addNumber("real_time_factor", s.real_time_factor)
+        .addNumber("online_seconds", s.online_seconds)
+        .addNumber("online_real_time_factor", s.online_real_time_factor)
         .addNumber("peak_rss_mib", s.peak_rss_mib)
         .addRaw("latency_ms", JsonObject()
                                   .addNumber("median", s.latency_median_ms)
@@ -189,7 +191,8 @@ void addOnlineFigures(const std::vector<FrameOutput>& frames, RunSummary& s) {
 
 }  // namespace
 
-RunSummary summarize(const PipelineRecords& records, const SystemOutput& output, RunMode mode, double wall_seconds) {
+RunSummary summarize(const PipelineRecords& records, const SystemOutput& output, RunMode mode, double online_seconds,
+                     double wall_seconds) {
   RunSummary s;
   s.mode = mode;
   s.images = records.images;
@@ -222,15 +225,17 @@ RunSummary summarize(const PipelineRecords& records, const SystemOutput& output,
   s.sequence_seconds = records.last_time - records.first_time;
   s.wall_seconds = wall_seconds;
   s.real_time_factor = wall_seconds > 0.0 ? s.sequence_seconds / wall_seconds : 0.0;
+  s.online_seconds = online_seconds;
+  s.online_real_time_factor = online_seconds > 0.0 ? s.sequence_seconds / online_seconds : 0.0;
   s.peak_rss_mib = peakResidentMiB();
   return s;
 }
 
 std::string formatRunSummary(const RunSummary& s, const SystemOutput& output) {
-  std::string text = fmt::format("mode {}: {} images, {} scans, {:.1f} s of data in {:.1f} s ({:.2f}x real time), "
-                                 "peak memory {:.0f} MiB\n",
+  std::string text = fmt::format("mode {}: {} images, {} scans, {:.1f} s of data in {:.1f} s ({:.2f}x real time; "
+                                 "online {:.1f} s, {:.2f}x), peak memory {:.0f} MiB\n",
                                  runModeName(s.mode), s.images, s.scans, s.sequence_seconds, s.wall_seconds,
-                                 s.real_time_factor, s.peak_rss_mib);
+                                 s.real_time_factor, s.online_seconds, s.online_real_time_factor, s.peak_rss_mib);
   if (s.images > 0)
     text += fmt::format("online output latency: median {:.1f} ms, p95 {:.1f} ms, max {:.1f} ms\n", s.latency_median_ms,
                         s.latency_p95_ms, s.latency_max_ms);
