@@ -10,7 +10,7 @@ packages=(
   cmake g++ make ccache pkg-config
   libeigen3-dev libopencv-dev libceres-dev
   libnanoflann-dev robin-map-dev libtbb-dev libyaml-cpp-dev
-  libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev
+  libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # ROS1 bag reading (optional component LVSLAM_WITH_ROSBAG, on by default)
   librosbag-storage-dev librcpputils-dev librcutils-dev libament-index-cpp-dev

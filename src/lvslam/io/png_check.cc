@@ -1,9 +1,9 @@
 #include "lvslam/io/png_check.h"
 
-#include <array>
 #include <cstdint>
 
 #include <fmt/format.h>
+#include <zlib.h>
 
 #include "lvslam/core/error.h"
 
@@ -12,22 +12,6 @@ namespace lvslam {
 namespace {
 
 constexpr std::string_view kSignature("\x89PNG\r\n\x1a\n", 8);
-
-// CRC-32 as PNG defines it (ISO 3309, polynomial 0xEDB88320).
-std::uint32_t crc32(std::string_view data) {
-  static constexpr auto kTable = [] {
-    std::array<std::uint32_t, 256> table{};
-    for (std::uint32_t n = 0; n < 256; ++n) {
-      std::uint32_t c = n;
-      for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      table[n] = c;
-    }
-    return table;
-  }();
-  std::uint32_t c = 0xFFFFFFFFu;
-  for (const char byte : data) c = kTable[(c ^ static_cast<std::uint8_t>(byte)) & 0xFFu] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
-}
 
 std::uint32_t bigEndian32(std::string_view bytes, std::size_t at) {
   std::uint32_t v = 0;
@@ -47,7 +31,9 @@ void checkPngChunks(std::string_view bytes, const std::string& path) {
     if (length > bytes.size() || at + 12 + length > bytes.size())
       throw Error(path, fmt::format("damaged PNG: the file ends at byte {} inside chunk '{}' of byte {} (truncated?)",
                                     bytes.size(), type, at));
-    if (crc32(bytes.substr(at + 4, 4 + length)) != bigEndian32(bytes, at + 8 + length))
+    // PNG's CRC is zlib's CRC-32 (ISO 3309) over the chunk's type and data.
+    const std::string_view checked = bytes.substr(at + 4, 4 + length);
+    if (crc32_z(0L, reinterpret_cast<const Bytef*>(checked.data()), checked.size()) != bigEndian32(bytes, at + 8 + length))
       throw Error(path, fmt::format("damaged PNG: chunk '{}' at byte {} ({} bytes) fails its CRC", type, at, length));
     if (type == "IEND") return;
     at += 12 + length;
