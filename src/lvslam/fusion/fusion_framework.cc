@@ -8,35 +8,13 @@
 
 namespace lvslam::fusion {
 
-namespace {
-
-// Cosine of the widest angle between the optical axis and a pixel's ray,
-// widened by `margin`: the image border's rays bound every pixel's, corners
-// included, with or without lens distortion.
-double viewConeCosine(const PinholeCamera& camera, double margin) {
-  double widest = 0.0;
-  const auto visit = [&](double u, double v) {
-    const Eigen::Vector3d ray = camera.unproject({u, v}).normalized();
-    widest = std::max(widest, std::acos(std::clamp(ray.z(), -1.0, 1.0)));
-  };
-  // The image spans [-0.5, size - 0.5] (pixel centres at integers).
-  const double left = -0.5, right = camera.width() - 0.5, top = -0.5, bottom = camera.height() - 0.5, step = 4.0;
-  for (double u = left; u < right; u += step) visit(u, top), visit(u, bottom);
-  for (double v = top; v < bottom; v += step) visit(left, v), visit(right, v);
-  visit(right, bottom);
-  return std::cos(std::min(M_PI, widest + margin));
-}
-
-}  // namespace
-
 FusionFramework::FusionFramework(const PinholeCamera& camera, const Eigen::Isometry3d& T_camera_lidar,
                                  const FusionConfig& config)
     : camera_(camera),
       T_camera_lidar_(T_camera_lidar),
       config_(config),
       accumulator_(config.accumulated_scans),
-      reconstructor_(camera, config),
-      view_cone_cosine_(viewConeCosine(camera, config.max_neighbour_angle_deg * M_PI / 180.0)) {}
+      reconstructor_(camera, config) {}
 
 void FusionFramework::addLidarScan(const std::vector<TimedFeature>& features, const ConstantVelocityMotion& motion) {
   accumulator_.addScan(features, motion);
@@ -52,13 +30,20 @@ FusionResult FusionFramework::process(double t_camera, const Eigen::Isometry3d& 
   result.t_camera = t_camera;
   std::vector<SphereFeature> features = featuresInCamera(T_world_lidar);
   result.lidar_features = features.size();
-  // Only a feature within the neighbour angle of some pixel's ray can be a
-  // line's neighbour; the others would only make the index larger.
-  std::erase_if(features, [this](const SphereFeature& f) {
-    return f.p_camera.z() < view_cone_cosine_ * f.p_camera.norm();
-  });
   if (features.empty()) return result;
-  const SphereIndex index(features);
+  // A segment's arc samples lie between its end rays, inside the cap round
+  // the optical axis that holds every end ray (a cap under 90 deg is convex
+  // on the sphere); only a feature within the neighbour angle of that cap
+  // can be a sample's neighbour, the others would only make the index larger.
+  double widest = 0.0;
+  for (const ImageSegment& segment : segments)
+    for (const Eigen::Vector2d& end : {segment.start, segment.end})
+      widest = std::max(widest, std::acos(std::clamp(camera_.unproject(end).normalized().z(), -1.0, 1.0)));
+  const double cone_cosine = std::cos(std::min(M_PI, widest + config_.max_neighbour_angle_deg * M_PI / 180.0));
+  std::erase_if(features, [cone_cosine](const SphereFeature& f) {
+    return f.p_camera.z() < cone_cosine * f.p_camera.norm();
+  });
+  const SphereIndex index(features);  // possibly empty: every segment is then far on the sphere
   const Eigen::Matrix3d R_world_camera = (T_world_lidar * T_camera_lidar_.inverse()).linear();
   for (std::size_t i = 0; i < segments.size(); ++i) {
     RejectReason why = RejectReason::kNone;

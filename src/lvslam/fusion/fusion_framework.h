@@ -63,7 +63,6 @@ class FusionFramework {
   FusionConfig config_;
   FeatureAccumulator accumulator_;
   LineReconstructor reconstructor_;
-  double view_cone_cosine_;  // features outside this cone round the optical axis cannot meet an image line
 };
 
 }  // namespace lvslam::fusion
