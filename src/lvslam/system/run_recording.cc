@@ -25,10 +25,9 @@ RunResult runRecording(Recording& recording, const SystemConfig& config, const P
   RunResult run;
   const auto start = std::chrono::steady_clock::now();
   run.records = runPipeline(*recording.source, config, progress, on_frame);
-  const auto online_end = std::chrono::steady_clock::now();
   run.output = assembleOutput(run.records, config, recording.source->calibration().T_camera_lidar);
   const auto end = std::chrono::steady_clock::now();
-  run.summary = summarize(run.records, run.output, config.mode, std::chrono::duration<double>(online_end - start).count(),
+  run.summary = summarize(run.records, run.output, config.mode, std::chrono::duration<double>(run.records.online_end - start).count(),
                           std::chrono::duration<double>(end - start).count());
   run.accuracy = evaluateOutput(recording, run.output, run.output.trajectory);
   run.accuracy_refined = evaluateOutput(recording, run.output, run.output.trajectory_refined);

@@ -29,8 +29,9 @@ struct RunSummary {
   double wall_seconds = 0.0;       // the whole run: online pipeline, then the offline step
   double real_time_factor = 0.0;   // sequence seconds per wall second
   // The online pipeline alone (reading, both subsystems, the online
-  // output): the pace a live robot needs. The rest of wall_seconds is the
-  // offline refinement and the outputs assembled after the last frame.
+  // output, up to the last frame's pose): the pace a live robot needs. The
+  // rest of wall_seconds is the loop closure's last solve, the offline
+  // refinement and the outputs assembled after the last frame.
   double online_seconds = 0.0;
   double online_real_time_factor = 0.0;
   double peak_rss_mib = 0.0;       // of the whole process so far

@@ -222,6 +222,7 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool relocate, Pip
   static const std::vector<VisualFrameRecord> no_visual;
   static const std::vector<LidarFrameRecord> no_lidar;
   stage.finish(workers.visual ? workers.visual->frames() : no_visual, workers.lidar ? workers.lidar->frames() : no_lidar);
+  records.online_end = std::chrono::steady_clock::now();
   records.online = stage.takeFrames();
   records.lidar_inputs = stage.takeLidarInputs();
   records.switches = stage.output().switches();

@@ -5,6 +5,7 @@
 // fusion lines; bounded queues carry the sensor data to both. The order of
 // every computation is fixed by the data, so the threaded run gives the same
 // numbers as the one-thread deterministic run.
+#include <chrono>
 #include <functional>
 #include <map>
 #include <optional>
@@ -30,6 +31,9 @@ struct MapLine {
 };
 
 struct PipelineRecords {
+  // When the last online pose was out (the run's online part ends here;
+  // the loop closure's last solve and the refinement come after).
+  std::chrono::steady_clock::time_point online_end;
   std::vector<VisualFrameRecord> visual;  // one per camera frame (visual and fused modes)
   std::vector<LidarFrameRecord> lidar;    // one per camera frame (lidar and fused modes)
   std::vector<ScanRecord> scans;
