@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     const sim::Scenario sc = sim::makeScenario(scenario, options);
     const sim::CameraRenderer renderer(sc);
     const PinholeCamera& camera = sc.camera.camera;
-    const visual::OrbExtractor orb(visual::OrbExtractorConfig{});
+    visual::OrbExtractor orb(visual::OrbExtractorConfig{});
     const double dt = gap / sc.camera.rate_hz;
     std::vector<std::vector<double>> errors(orb.config().num_levels);
     for (double t = 5.0; t < 55.0; t += 5.0) {

@@ -27,7 +27,7 @@ TEST(OrbExtractor, FillsTheBudgetSpreadEvenlyOverTheGrid) {
   OrbExtractorConfig config;
   config.max_features = 600;
   config.grid_cell_size = 40;
-  const OrbExtractor orb(config);
+  OrbExtractor orb(config);
   std::vector<cv::KeyPoint> kps;
   cv::Mat desc;
   orb.extract(testing::texturedImage(640, 480), kps, desc);

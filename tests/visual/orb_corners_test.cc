@@ -1,6 +1,8 @@
 #include "lvslam/visual/feature/orb_corners.h"
 
 #include <cmath>
+#include <set>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
@@ -50,7 +52,7 @@ TEST(OrbCorners, OrientationPointsUpTheIntensityRamp) {
 TEST(OrbCorners, DescriptorsMatchAcrossAQuarterTurn) {
   OrbExtractorConfig config;
   config.max_features = 500;
-  const OrbExtractor orb(config);
+  OrbExtractor orb(config);
   const cv::Mat img = testing::texturedImage(400, 300, 11);
   cv::Mat turned;
   cv::rotate(img, turned, cv::ROTATE_90_CLOCKWISE);  // (x, y) -> (rows - 1 - y, x)
@@ -72,6 +74,51 @@ TEST(OrbCorners, DescriptorsMatchAcrossAQuarterTurn) {
   }
   EXPECT_GT(close, 150);
   EXPECT_GT(right, 0.9 * close) << right << " of " << close;
+}
+
+// Each level is searched at a higher FAST threshold first when that filled
+// its FAST-score cut on the last image. On a textured image (strong corners
+// fill the cut) and a faint one (none reach 20 grey levels), in an order that
+// passes through every choice of first search, the keypoints are the ones a
+// single search at fast_threshold gives.
+TEST(OrbCorners, TheCheaperFirstSearchKeepsTheCornersOfTheFullSearch) {
+  constexpr int kFeatures = 40;
+  OrbExtractorConfig config;
+  config.num_levels = 1;
+  config.candidate_factor = 1.0;  // every candidate is kept: the output is the level's cut
+  config.max_features = kFeatures;
+  config.fast_threshold = 7;
+  OrbExtractor orb(config);
+  const auto fullSearch = [&](const cv::Mat& img) {
+    std::vector<cv::KeyPoint> corners;
+    cv::FAST(img, corners, config.fast_threshold, true, cv::FastFeatureDetector::TYPE_9_16);
+    const int b = config.edge_threshold;
+    std::erase_if(corners, [&](const cv::KeyPoint& kp) {
+      return kp.pt.x < b || kp.pt.y < b || kp.pt.x >= img.cols - b || kp.pt.y >= img.rows - b;
+    });
+    cv::KeyPointsFilter::retainBest(corners, 2 * kFeatures);
+    for (cv::KeyPoint& kp : corners) kp.response = harrisResponse(img, cvRound(kp.pt.x), cvRound(kp.pt.y));
+    cv::KeyPointsFilter::retainBest(corners, kFeatures);
+    std::set<std::pair<int, int>> at;
+    for (const cv::KeyPoint& kp : corners) at.emplace(cvRound(kp.pt.x), cvRound(kp.pt.y));
+    return at;
+  };
+  const cv::Mat textured = testing::texturedImage(640, 480, 5);
+  cv::Mat faint;
+  textured.convertTo(faint, CV_8U, 0.07, 128.0 * (1.0 - 0.07));  // no difference reaches 20 grey levels
+  std::vector<cv::KeyPoint> strong;
+  cv::FAST(textured, strong, 20, true, cv::FastFeatureDetector::TYPE_9_16);
+  ASSERT_GT(strong.size(), 4u * kFeatures);  // the textured image's strong corners fill the cut
+  for (const cv::Mat& img : {textured, faint, textured, textured, faint}) {
+    std::vector<cv::KeyPoint> keypoints;
+    cv::Mat descriptors;
+    orb.extract(img, keypoints, descriptors);
+    std::set<std::pair<int, int>> at;
+    for (const cv::KeyPoint& kp : keypoints) at.emplace(cvRound(kp.pt.x), cvRound(kp.pt.y));
+    const std::set<std::pair<int, int>> expected = fullSearch(img);
+    EXPECT_EQ(static_cast<int>(expected.size()), kFeatures);
+    EXPECT_EQ(at, expected);
+  }
 }
 
 }  // namespace

@@ -14,6 +14,7 @@ namespace lvslam::visual {
 namespace {
 constexpr int kPatchSize = 31;  // ORB's descriptor patch (Rublee et al. 2011)
 constexpr int kPatchRadius = kPatchSize / 2;
+constexpr int kStrongFast = 20;  // FAST threshold of the cheaper first search (ORB-SLAM's iniThFAST)
 
 void validate(const OrbExtractorConfig& c) {
   const std::string where = "OrbExtractorConfig";
@@ -45,19 +46,47 @@ std::vector<int> candidatesPerLevel(int total, double scale_factor, int levels) 
   return share;
 }
 
-// The level's FAST corners at least `border` pixels inside, the strongest
-// `budget` by Harris (cut to twice that by FAST score first, as cv::ORB does),
-// in level-0 pixels; `at_level` keeps their pixels in the level image.
-void detectOnLevel(const cv::Mat& level_image, int level, float scale, int budget, const OrbExtractorConfig& c,
-                   std::vector<cv::KeyPoint>& candidates, std::vector<cv::Point>& at_level) {
+// The level's FAST corners at least edge_threshold pixels inside, cut to the
+// 2 * budget of highest FAST score (as cv::ORB does). A corner is suppressed
+// only by a neighbour of higher score, so the corners scoring at least
+// kStrongFast are the same at any lower threshold: when they fill the cut,
+// a search at kStrongFast keeps exactly what the search at fast_threshold
+// would, without scoring every weak corner (tens of thousands on a noisy
+// night image). `strong_fills` says whether they filled it on the level's
+// last image; it only decides which search is tried first.
+std::vector<cv::KeyPoint> fastCut(const cv::Mat& level_image, int budget, const OrbExtractorConfig& c,
+                                  char& strong_fills) {
+  const auto fastInside = [&](int threshold) {
+    std::vector<cv::KeyPoint> found;
+    cv::FAST(level_image, found, threshold, true, cv::FastFeatureDetector::TYPE_9_16);
+    const int border = c.edge_threshold;
+    std::erase_if(found, [&](const cv::KeyPoint& kp) {
+      const int x = cvRound(kp.pt.x), y = cvRound(kp.pt.y);
+      return x < border || y < border || x >= level_image.cols - border || y >= level_image.rows - border;
+    });
+    return found;
+  };
+  const int cut = 2 * budget;
   std::vector<cv::KeyPoint> corners;
-  cv::FAST(level_image, corners, c.fast_threshold, true, cv::FastFeatureDetector::TYPE_9_16);
-  const int border = c.edge_threshold;
-  std::erase_if(corners, [&](const cv::KeyPoint& kp) {
-    const int x = cvRound(kp.pt.x), y = cvRound(kp.pt.y);
-    return x < border || y < border || x >= level_image.cols - border || y >= level_image.rows - border;
-  });
-  cv::KeyPointsFilter::retainBest(corners, 2 * budget);
+  if (c.fast_threshold < kStrongFast && strong_fills) {
+    corners = fastInside(kStrongFast);
+    strong_fills = static_cast<int>(corners.size()) >= cut;
+  }
+  if (!strong_fills || c.fast_threshold >= kStrongFast) {
+    corners = fastInside(c.fast_threshold);
+    const auto strong = std::count_if(corners.begin(), corners.end(),
+                                      [](const cv::KeyPoint& kp) { return kp.response >= kStrongFast; });
+    strong_fills = strong >= cut;
+  }
+  cv::KeyPointsFilter::retainBest(corners, cut);
+  return corners;
+}
+
+// The level's cut (fastCut), the strongest `budget` of it by Harris, in
+// level-0 pixels; `at_level` keeps their pixels in the level image.
+void detectOnLevel(const cv::Mat& level_image, int level, float scale, int budget, const OrbExtractorConfig& c,
+                   char& strong_fills, std::vector<cv::KeyPoint>& candidates, std::vector<cv::Point>& at_level) {
+  std::vector<cv::KeyPoint> corners = fastCut(level_image, budget, c, strong_fills);
   for (cv::KeyPoint& kp : corners) kp.response = harrisResponse(level_image, cvRound(kp.pt.x), cvRound(kp.pt.y));
   cv::KeyPointsFilter::retainBest(corners, budget);
   for (const cv::KeyPoint& kp : corners) {
@@ -76,6 +105,7 @@ OrbExtractor::OrbExtractor(const OrbExtractorConfig& config) : config_(config) {
                          config_.fast_threshold);
   const int total = static_cast<int>(std::ceil(config_.max_features * config_.candidate_factor));
   budget_ = candidatesPerLevel(total, config_.scale_factor, config_.num_levels);
+  strong_fills_.assign(static_cast<std::size_t>(config_.num_levels), 1);
   // cv::ORB's level scales (float, from its float factor): the keypoints land
   // on the pixels it describes.
   const double factor = static_cast<float>(config_.scale_factor);
@@ -91,7 +121,7 @@ OrbExtractor::OrbExtractor(const OrbExtractorConfig& config) : config_(config) {
 }
 
 void OrbExtractor::extract(const cv::Mat& gray, std::vector<cv::KeyPoint>& keypoints,
-                           cv::Mat& descriptors) const {
+                           cv::Mat& descriptors) {
   if (gray.empty() || gray.type() != CV_8UC1) {
     throw Error("OrbExtractor", "expects a non-empty 8-bit single-channel image");
   }
@@ -110,7 +140,7 @@ void OrbExtractor::extract(const cv::Mat& gray, std::vector<cv::KeyPoint>& keypo
       if (size.width <= 2 * config_.edge_threshold || size.height <= 2 * config_.edge_threshold) break;
       cv::resize(levels[level - 1], levels[level], size, 0, 0, cv::INTER_LINEAR_EXACT);
     }
-    detectOnLevel(levels[level], level, s, budget_[level], config_, candidates, at_level);
+    detectOnLevel(levels[level], level, s, budget_[level], config_, strong_fills_[level], candidates, at_level);
   }
   const std::vector<int> keep = selectOnGrid(candidates, gray.cols, gray.rows,
                                              config_.grid_cell_size, config_.max_features);

@@ -30,8 +30,9 @@ class OrbExtractor {
   explicit OrbExtractor(const OrbExtractorConfig& config);
 
   // gray: 8-bit single channel. Keypoints in level-0 pixels; descriptors N x 32.
-  void extract(const cv::Mat& gray, std::vector<cv::KeyPoint>& keypoints,
-               cv::Mat& descriptors) const;
+  // The output depends on the image only; what the last image's levels were
+  // like only chooses the cheaper FAST search to try first.
+  void extract(const cv::Mat& gray, std::vector<cv::KeyPoint>& keypoints, cv::Mat& descriptors);
 
   const ScalePyramid& pyramid() const { return pyramid_; }
   const OrbExtractorConfig& config() const { return config_; }
@@ -42,6 +43,7 @@ class OrbExtractor {
   ScalePyramid pyramid_;
   std::vector<int> budget_;         // candidates per level
   std::vector<float> level_scale_;  // as cv::ORB computes them
+  std::vector<char> strong_fills_;  // per level: did the strong corners fill the FAST cut last time
 };
 
 // Indices of at most max_count keypoints chosen round-robin over grid cells
