@@ -1,7 +1,6 @@
 #include "lvslam/fusion/fusion_framework.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -108,7 +107,7 @@ std::size_t expectTheLinesOfAllFeatures(const std::vector<TimedFeature>& feature
   const std::vector<SphereFeature> all = fusion.featuresInCamera(T_world_lidar);
   const SphereIndex index(all);
   const LineReconstructor reconstructor(cam, FusionConfig{});
-  std::array<int, 8> rejected{};
+  decltype(FusionResult::rejected) rejected{};
   for (std::size_t i = 0; i < segments.size(); ++i) {
     RejectReason why = RejectReason::kNone;
     const auto line = reconstructor.reconstruct(segments[i], all, index, &why);

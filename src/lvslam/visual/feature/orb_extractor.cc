@@ -67,17 +67,13 @@ std::vector<cv::KeyPoint> fastCut(const cv::Mat& level_image, int budget, const 
     return found;
   };
   const int cut = 2 * budget;
+  const bool strong_first = c.fast_threshold < kStrongFast && strong_fills;
   std::vector<cv::KeyPoint> corners;
-  if (c.fast_threshold < kStrongFast && strong_fills) {
-    corners = fastInside(kStrongFast);
-    strong_fills = static_cast<int>(corners.size()) >= cut;
-  }
-  if (!strong_fills || c.fast_threshold >= kStrongFast) {
-    corners = fastInside(c.fast_threshold);
-    const auto strong = std::count_if(corners.begin(), corners.end(),
-                                      [](const cv::KeyPoint& kp) { return kp.response >= kStrongFast; });
-    strong_fills = strong >= cut;
-  }
+  if (strong_first) corners = fastInside(kStrongFast);
+  if (!strong_first || static_cast<int>(corners.size()) < cut) corners = fastInside(c.fast_threshold);
+  // FAST's response is the corner's score.
+  strong_fills = std::count_if(corners.begin(), corners.end(),
+                               [](const cv::KeyPoint& kp) { return kp.response >= kStrongFast; }) >= cut;
   cv::KeyPointsFilter::retainBest(corners, cut);
   return corners;
 }
