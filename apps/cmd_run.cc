@@ -107,14 +107,14 @@ int runRun(RunArgs args) {
     online_poses.emplace(args.out_dir + "/trajectory.tum");
     frame_stats.emplace(args.out_dir + "/stats_frames.jsonl", !args.deterministic);
   }
-  const system::RunResult run = system::runRecording(recording, config, showProgress, [&](const system::FrameOutput& f) {
+  system::RunResult run = system::runRecording(recording, config, showProgress, [&](const system::FrameOutput& f) {
     if (online_poses && f.T_world_camera) online_poses->add({f.t, *f.T_world_camera});
     if (frame_stats) frame_stats->add(f);
   });
   online_poses.reset();
   frame_stats.reset();
   progress.finish();
-  finishRunFolder(args.out_dir, recording, run, args.mode, args.deterministic);
+  finishRunFolder(args.out_dir, recording, std::move(run), args.mode, args.deterministic);
   return 0;
 }
 

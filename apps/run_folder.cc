@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "report_html.h"
+#include "lvslam/core/process_memory.h"
 #include "lvslam/eval/eval_report.h"
 #include "lvslam/io/tum.h"
 #include "lvslam/system/ground_truth_export.h"
@@ -14,8 +15,8 @@
 
 namespace lvslam::apps {
 
-void finishRunFolder(const std::string& out_dir, const Recording& recording, const system::RunResult& run,
-                     const std::string& mode, bool deterministic) {
+void finishRunFolder(const std::string& out_dir, Recording& recording, system::RunResult run, const std::string& mode,
+                     bool deterministic) {
   // Input that ends in a fault (a cut last scan or image) still gives what was
   // read before it: the outputs are written, then the fault is the one error line.
   if (run.output.trajectory.empty()) {  // no result: the streams' files go
@@ -44,11 +45,16 @@ void finishRunFolder(const std::string& out_dir, const Recording& recording, con
     writeTum(out_dir + "/groundtruth.tum", *gt);
   else
     std::filesystem::remove(out_dir + "/groundtruth.tum");
+  const std::optional<Error> fault = std::move(run.records.input_fault);
+  const double stopped_after_t = run.summary.stopped_after_t;
+  run = {};
+  recording.ground_truth.reset();
+  releaseFreedMemory();
   writeRunReportOrWarn(out_dir);
-  if (run.records.input_fault) {
+  if (fault) {
     std::cout << fmt::format("the recording could not be read after t = {:.6f}: the outputs hold what came before\n",
-                             run.summary.stopped_after_t);
-    throw *run.records.input_fault;
+                             stopped_after_t);
+    throw *fault;
   }
 }
 

@@ -13,8 +13,10 @@ namespace lvslam::apps {
 
 // Throws the recording's input fault (after writing what came before it), or
 // std::runtime_error "no result: ..." when the run gave no pose (then nothing
-// is written and the streamed trajectory.tum is removed).
-void finishRunFolder(const std::string& out_dir, const Recording& recording, const system::RunResult& run,
-                     const std::string& mode, bool deterministic);
+// is written and the streamed trajectory.tum is removed). The run's records
+// and the recording's ground truth are let go once written, before the
+// report (which reads the folder): on a long run they are most of the memory.
+void finishRunFolder(const std::string& out_dir, Recording& recording, system::RunResult run, const std::string& mode,
+                     bool deterministic);
 
 }  // namespace lvslam::apps

@@ -152,7 +152,7 @@ int LiveNode::finish() {
   publisher_.publishLines(run.output.lines_world);
   if (params_.out_dir.empty()) return 0;
   try {
-    apps::finishRunFolder(params_.out_dir, recording_, run, mode_, params_.deterministic);
+    apps::finishRunFolder(params_.out_dir, recording_, std::move(*result_), mode_, params_.deterministic);
   } catch (const Error& e) {
     ROS_ERROR("lvslam_node: %s", e.what());
     return 2;

@@ -22,7 +22,9 @@ ReportAssets assets() {
 }
 
 TEST(HtmlPage, NoInlinedTextEndsItsScriptEarly) {
-  const std::string html = htmlPage("t <b>", R"({"kind": "run", "reason": "</script><!--"})", assets());
+  eval::JsonObject data;
+  data.addString("kind", "run").addString("reason", "</script><!--");
+  const std::string html = htmlPage("t <b>", data, assets());
   // Only the five script elements the page has end one: data, two module
   // texts, Chart.js, report.js ("<script" inside a script's text is inert).
   EXPECT_EQ(count(html, "</script>"), 5u);
@@ -34,7 +36,7 @@ TEST(HtmlPage, NoInlinedTextEndsItsScriptEarly) {
 }
 
 TEST(HtmlPage, WithoutThe3dViewThreeIsLeftOut) {
-  const std::string html = htmlPage("bench", R"({"kind": "bench"})", assets(), false);
+  const std::string html = htmlPage("bench", eval::JsonObject().addString("kind", "bench"), assets(), false);
   EXPECT_EQ(html.find("three-module"), std::string::npos);
   EXPECT_EQ(count(html, "</script>"), 3u);
 }

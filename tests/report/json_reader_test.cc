@@ -33,6 +33,19 @@ TEST(JsonReader, ACorruptByteIsNamed) {
   EXPECT_EQ(message.find("json.exception"), std::string::npos) << message;
 }
 
+// What the callback drops is still read: a corrupt byte inside it is
+// refused as in a full parse, and what it keeps is whole.
+TEST(JsonReader, WhatTheCallbackDropsIsCheckedNotKept) {
+  const auto top_level_only = [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) { return depth <= 1; };
+  const nlohmann::json v = parseJson(R"({"s": 2, "frames": [{"t": 1}, {"t": 2}]})", "stats.json", top_level_only);
+  EXPECT_EQ(v["s"].get<int>(), 2);
+  ASSERT_NE(findMember(v, "frames"), nullptr);
+  EXPECT_TRUE(findMember(v, "frames")->empty());
+  const std::string message = testing::errorMessageOf(
+      [&] { parseJson(R"({"s": 2, "frames": [{"t": 1}, {"t": x}]})", "stats.json", top_level_only); });
+  EXPECT_NE(message.find("stats.json: invalid JSON at byte 36"), std::string::npos) << message;
+}
+
 TEST(JsonReader, CorruptTextIsRefused) {
   for (const char* text : {"{\"a\": 1,}", "[1 2]", "{\"a\": nul}", "{\"a\": 1} x", "{a: 1}", ""})
     EXPECT_NE(testing::errorMessageOf([&] { parseJson(text, "f.json"); }).find("f.json: invalid JSON"), std::string::npos)

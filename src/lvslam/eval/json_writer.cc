@@ -56,9 +56,18 @@ JsonObject& JsonObject::addRaw(std::string_view key, std::string json) {
 }
 
 std::string JsonObject::str() const {
-  std::string out = "{";
-  for (std::size_t i = 0; i < fields_.size(); ++i) out += (i ? ", " : "") + fields_[i];
-  return out + "}";
+  std::string out;
+  write([&out](std::string_view piece) { out += piece; });
+  return out;
+}
+
+void JsonObject::write(const std::function<void(std::string_view)>& sink) const {
+  sink("{");
+  for (std::size_t i = 0; i < fields_.size(); ++i) {
+    if (i) sink(", ");
+    sink(fields_[i]);
+  }
+  sink("}");
 }
 
 }  // namespace lvslam::eval

@@ -3,6 +3,7 @@
 // order, strings escaped, numbers in the shortest form that reads back to the
 // same double, NaN and infinity written as null (JSON has neither).
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +22,9 @@ class JsonObject {
   // `json` must already be valid JSON (a nested object, an array, null).
   JsonObject& addRaw(std::string_view key, std::string json);
   std::string str() const;
+  // The same text in pieces, none of them a copy of a member (a report's
+  // data holds a run's whole stats.json).
+  void write(const std::function<void(std::string_view)>& sink) const;
 
  private:
   std::vector<std::string> fields_;

@@ -1,6 +1,8 @@
 #include "lvslam/io/tum.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -57,6 +59,11 @@ std::string tumLine(const StampedPose& sp) {
 Trajectory readTum(const std::string& path) {
   std::ifstream in = openOrThrow(path);
   Trajectory traj;
+  // Sized once: a long ground truth (hundreds of thousands of poses) would
+  // otherwise hold half again its size while the vector grows.
+  traj.reserve(static_cast<std::size_t>(std::count(std::istreambuf_iterator<char>(in), {}, '\n')) + 1);
+  in.clear();
+  in.seekg(0);
   std::string line;
   std::vector<double> v;
   for (int line_no = 1; std::getline(in, line); ++line_no) {

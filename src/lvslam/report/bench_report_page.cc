@@ -10,12 +10,9 @@ void writeBenchReport(const std::string& path, const std::string& command, const
   std::string groups = "[";
   for (const std::string& group : groups_json) groups += (groups.size() > 1 ? "," : "") + group;
   const std::string title = "lvslam bench: " + command;
-  const std::string data = eval::JsonObject()
-                               .addString("kind", "bench")
-                               .addString("title", title)
-                               .addRaw("groups", groups + "]")
-                               .str();
-  writeHtmlFile(path, htmlPage(title, data, assets, false));
+  eval::JsonObject data;
+  data.addString("kind", "bench").addString("title", title).addRaw("groups", groups + "]");
+  writeHtmlFile(path, title, data, assets, false);
 }
 
 }  // namespace lvslam::report

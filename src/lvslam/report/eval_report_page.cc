@@ -15,13 +15,12 @@ void writeEvalReport(const std::string& path, const Trajectory& gt, const std::s
                                 .addRaw("errors", errorsJson(errors))
                                 .str();
   const std::string title = "lvslam eval: " + est_name + " against " + gt_name;
-  const std::string data = eval::JsonObject()
-                               .addString("kind", "eval")
-                               .addString("title", title)
-                               .addRaw("estimates", "[" + entry + "]")
-                               .addRaw("groundtruth", trajectoryJson(gt_name, gt, kGroundTruthDisplayPoses))
-                               .str();
-  writeHtmlFile(path, htmlPage(title, data, assets));
+  eval::JsonObject data;
+  data.addString("kind", "eval")
+      .addString("title", title)
+      .addRaw("estimates", "[" + entry + "]")
+      .addRaw("groundtruth", trajectoryJson(gt_name, gt, kGroundTruthDisplayPoses));
+  writeHtmlFile(path, title, data, assets);
 }
 
 }  // namespace lvslam::report

@@ -3,9 +3,10 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string_view>
 
 #include "lvslam/core/error.h"
-#include "lvslam/report/report_json.h"
 
 namespace lvslam::report {
 
@@ -34,32 +35,49 @@ std::string htmlEscape(const std::string& text) {
   return out;
 }
 
-}  // namespace
-
-std::string htmlPage(const std::string& title, const std::string& data_json, const ReportAssets& assets,
-                     bool with_3d) {
-  std::string html;
-  html.reserve(data_json.size() + assets.three_js.size() + assets.chart_js.size() + 200000);
-  html += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + htmlEscape(title) +
-          "</title>\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<style>\n" +
-          assets.report_css + "\n</style>\n</head>\n<body>\n<div id=\"app\"></div>\n";
-  html += "<script type=\"application/json\" id=\"lvslam-data\">" + scriptSafe(data_json) + "</script>\n";
-  // The ES modules of three.js load from blob URLs made of these texts.
-  if (with_3d)
-    html += "<script type=\"text/plain\" id=\"three-module\">" + inlineSafe(assets.three_js) + "</script>\n";
-  if (with_3d)
-    html += "<script type=\"text/plain\" id=\"orbit-controls-module\">" + inlineSafe(assets.orbit_controls_js) +
-            "</script>\n";
-  html += "<script>\n" + inlineSafe(assets.chart_js) + "\n</script>\n";
-  html += "<script>\n" + inlineSafe(assets.report_js) + "\n</script>\n</body>\n</html>\n";
-  return html;
+// JSON text made safe inside <script>: '<' (only ever inside a JSON string)
+// becomes \u003c, which every JSON reader reads back as the same string.
+void writeScriptSafe(std::ostream& out, std::string_view json) {
+  for (std::size_t at = json.find('<'); at != std::string_view::npos; at = json.find('<')) {
+    out << json.substr(0, at) << "\\u003c";
+    json.remove_prefix(at + 1);
+  }
+  out << json;
 }
 
-void writeHtmlFile(const std::string& path, const std::string& html) {
+}  // namespace
+
+void writeHtmlPage(std::ostream& out, const std::string& title, const eval::JsonObject& data,
+                   const ReportAssets& assets, bool with_3d) {
+  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << htmlEscape(title)
+      << "</title>\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<style>\n"
+      << assets.report_css << "\n</style>\n</head>\n<body>\n<div id=\"app\"></div>\n";
+  out << "<script type=\"application/json\" id=\"lvslam-data\">";
+  data.write([&out](std::string_view piece) { writeScriptSafe(out, piece); });
+  out << "</script>\n";
+  // The ES modules of three.js load from blob URLs made of these texts.
+  if (with_3d)
+    out << "<script type=\"text/plain\" id=\"three-module\">" << inlineSafe(assets.three_js) << "</script>\n";
+  if (with_3d)
+    out << "<script type=\"text/plain\" id=\"orbit-controls-module\">" << inlineSafe(assets.orbit_controls_js)
+        << "</script>\n";
+  out << "<script>\n" << inlineSafe(assets.chart_js) << "\n</script>\n";
+  out << "<script>\n" << inlineSafe(assets.report_js) << "\n</script>\n</body>\n</html>\n";
+}
+
+std::string htmlPage(const std::string& title, const eval::JsonObject& data, const ReportAssets& assets,
+                     bool with_3d) {
+  std::ostringstream out;
+  writeHtmlPage(out, title, data, assets, with_3d);
+  return out.str();
+}
+
+void writeHtmlFile(const std::string& path, const std::string& title, const eval::JsonObject& data,
+                   const ReportAssets& assets, bool with_3d) {
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary);
-    out << html;
+    writeHtmlPage(out, title, data, assets, with_3d);
     if (!out) throw Error(path, "cannot write the file");
   }
   std::error_code ec;

@@ -22,9 +22,10 @@ std::string reasonOf(const std::string& what) {
 
 }  // namespace
 
-nlohmann::json parseJson(std::string_view text, const std::string& name) {
+nlohmann::json parseJson(std::string_view text, const std::string& name,
+                         const nlohmann::json::parser_callback_t& keep) {
   try {
-    return nlohmann::json::parse(text.begin(), text.end());
+    return nlohmann::json::parse(text.begin(), text.end(), keep);
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte counts from 1 and lies one past the text when the text ended
     // too early: reported as the byte (from 0) where reading stopped.

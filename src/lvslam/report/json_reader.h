@@ -12,8 +12,10 @@ namespace lvslam::report {
 
 // Parses `text`; throws lvslam::Error(name, "invalid JSON at byte N: why")
 // for anything that is not one whole JSON document (also a bad \u escape or
-// invalid UTF-8 inside a string).
-nlohmann::json parseJson(std::string_view text, const std::string& name);
+// invalid UTF-8 inside a string). `keep`, when given, is nlohmann's parser
+// callback: what it returns false for is checked but not kept.
+nlohmann::json parseJson(std::string_view text, const std::string& name,
+                         const nlohmann::json::parser_callback_t& keep = nullptr);
 
 // Reads and parses a file; the error names the file.
 nlohmann::json readJsonFile(const std::string& path);

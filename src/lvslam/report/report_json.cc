@@ -89,16 +89,4 @@ std::string linesJson(const std::vector<PlySegment>& segments) {
   return JsonObject().addRaw("p", fixedArray(p, 3)).addRaw("rgb", fixedArray(rgb, 0)).str();
 }
 
-std::string scriptSafe(const std::string& json) {
-  std::string out;
-  out.reserve(json.size());
-  for (char c : json) {
-    if (c == '<')
-      out += "\\u003c";
-    else
-      out += c;
-  }
-  return out;
-}
-
 }  // namespace lvslam::report

@@ -34,8 +34,4 @@ std::string mapJson(const DecimatedMap& map, std::size_t points_total);
 // {"p": [ax,ay,az,bx,by,bz,...], "rgb": [r,g,b,...]}
 std::string linesJson(const std::vector<PlySegment>& segments);
 
-// JSON text made safe inside <script>: '<' (only ever inside a JSON string)
-// becomes \u003c, which every JSON reader reads back as the same string.
-std::string scriptSafe(const std::string& json);
-
 }  // namespace lvslam::report

@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <sstream>
 
 #include "lvslam/core/error.h"
 #include "lvslam/eval/evaluate.h"
@@ -21,14 +20,21 @@ namespace {
 namespace fs = std::filesystem;
 
 // stats.json as text (inlined as it is), after checking that it parses and
-// holds what the page draws.
+// holds what the page draws. Only its summary is held parsed: the per-frame
+// arrays (tens of megabytes as a parsed tree on a long run) are checked and
+// dropped as they are read.
 std::string readStats(const fs::path& path, nlohmann::json& stats) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw Error(path.string(), "cannot read the file (is this a folder `lvslam run` wrote?)");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  stats = parseJson(text, path.string());
+  std::string text(static_cast<std::size_t>(in.tellg()), '\0');
+  in.seekg(0);
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  std::string member;
+  stats = parseJson(text, path.string(),
+                    [&member](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+                      if (depth == 1 && event == nlohmann::json::parse_event_t::key) member = parsed.get<std::string>();
+                      return depth <= 1 || member == "summary";
+                    });
   for (const char* key : {"summary", "frames", "scans", "switches"})
     if (!findMember(stats, key)) throw Error(path.string(), std::string("no \"") + key + "\" field");
   if (!stats.at("summary").is_object()) throw Error(path.string(), "\"summary\" is not an object");
@@ -67,7 +73,7 @@ std::string trajectoryEntry(const std::string& name, const Trajectory& est, cons
 RunReportInfo writeRunReport(const std::string& run_dir, const ReportAssets& assets) {
   const fs::path dir(run_dir);
   nlohmann::json stats;
-  const std::string stats_text = readStats(dir / "stats.json", stats);
+  std::string stats_text = readStats(dir / "stats.json", stats);
   const Trajectory online = readTum((dir / "trajectory.tum").string());
   std::optional<Trajectory> refined, gt;
   if (fs::exists(dir / "trajectory_refined.tum")) refined = readTum((dir / "trajectory_refined.tum").string());
@@ -84,7 +90,7 @@ RunReportInfo writeRunReport(const std::string& run_dir, const ReportAssets& ass
 
   RunReportInfo info;
   eval::JsonObject data;
-  data.addString("kind", "run").addString("title", "lvslam run: " + run_dir).addRaw("stats", stats_text);
+  data.addString("kind", "run").addString("title", "lvslam run: " + run_dir).addRaw("stats", std::move(stats_text));
   data.addRaw("estimates", entries);
   if (gt) data.addRaw("groundtruth", trajectoryJson("ground truth (groundtruth.tum)", *gt, kGroundTruthDisplayPoses));
   if (fs::exists(dir / "map.ply")) {
@@ -97,10 +103,9 @@ RunReportInfo writeRunReport(const std::string& run_dir, const ReportAssets& ass
   }
   if (fs::exists(dir / "lines.ply")) data.addRaw("lines", linesJson(readLineSegmentsPly((dir / "lines.ply").string())));
 
-  const std::string html = htmlPage("lvslam run: " + run_dir, data.str(), assets);
   info.path = (dir / "report.html").string();
-  writeHtmlFile(info.path, html);
-  info.bytes = html.size();
+  writeHtmlFile(info.path, "lvslam run: " + run_dir, data, assets);
+  info.bytes = fs::file_size(info.path);
   return info;
 }
 

@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "lvslam/core/error.h"
+#include "lvslam/core/process_memory.h"
 #include "lvslam/eval/eval_report.h"
 #include "lvslam/eval/json_writer.h"
 #include "lvslam/eval/line_accuracy.h"
@@ -24,10 +25,13 @@ using eval::JsonObject;
 
 const char* sourceName(OutputSource s) { return s == OutputSource::kVisual ? "visual" : "lidar"; }
 
-std::string jsonList(const std::vector<std::string>& items) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ",\n  " : "\n  ") + items[i];
-  return out + (items.empty() ? "]" : "\n]");
+// A JSON array of `count` items, one per line, written as each is made
+// (stats.json of a long run holds tens of thousands).
+template <typename ItemJson>
+void writeJsonList(std::ostream& out, std::size_t count, ItemJson item_json) {
+  out << '[';
+  for (std::size_t i = 0; i < count; ++i) out << (i ? ",\n  " : "\n  ") << item_json(i);
+  out << (count == 0 ? "]" : "\n]");
 }
 
 std::string visualJson(const VisualFrameRecord& v) {
@@ -141,12 +145,6 @@ std::string summaryJson(const RunSummary& s, const RunAccuracy& accuracy, bool t
   return o.str();
 }
 
-void writeText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream file(path);
-  file << text;
-  if (!file) throw Error(path.string(), "cannot write the file");
-}
-
 double lostFraction(const PipelineRecords& records, const SystemOutput& output, RunMode mode) {
   const auto share = [](std::size_t part, std::size_t whole) {
     return whole == 0 ? 1.0 : static_cast<double>(part) / static_cast<double>(whole);
@@ -258,6 +256,37 @@ std::string formatRunSummary(const RunSummary& s, const SystemOutput& output) {
   return text;
 }
 
+namespace {
+
+// stats.json, streamed: its members in the order a reader finds them.
+void writeStatsJson(const std::filesystem::path& path, const PipelineRecords& records, const SystemOutput& output,
+                    const std::string& summary_json, bool with_timings) {
+  std::ofstream file(path);
+  bool first = true;
+  const auto member = [&file, &first](std::string_view key) -> std::ostream& {
+    file << (first ? "{" : ", ") << eval::jsonString(key) << ": ";
+    first = false;
+    return file;
+  };
+  member("summary") << summary_json;
+  writeJsonList(member("switches"), output.switches.size(), [&output](std::size_t i) {
+    const SwitchEvent& e = output.switches[i];
+    return JsonObject().addNumber("t", e.t).addString("to", sourceName(e.to)).addString("reason", e.reason).str();
+  });
+  writeJsonList(member("frames"), output.frames.size(),
+                [&](std::size_t j) { return frameJson(records, output, j, with_timings); });
+  writeJsonList(member("scans"), records.scans.size(),
+                [&](std::size_t i) { return scanJson(records.scans[i], with_timings); });
+  if (output.loop) member("loop") << loopJson(*output.loop);
+  if (!records.extrinsic_checks.empty())
+    writeJsonList(member("extrinsic_check"), records.extrinsic_checks.size(),
+                  [&records](std::size_t i) { return extrinsicCheckJson(records.extrinsic_checks[i]); });
+  file << "}\n";
+  if (!file) throw Error(path.string(), "cannot write the file");
+}
+
+}  // namespace
+
 void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records, const SystemOutput& output,
                      const RunSummary& summary, const RunAccuracy& accuracy, bool with_timings) {
   const std::filesystem::path dir(out_dir);
@@ -274,34 +303,9 @@ void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records,
       writeTum((own / fmt::format("visual_map_{}.tum", id)).string(), poses);
     if (!output.lidar_camera.empty()) writeTum((own / "lidar_camera.tum").string(), output.lidar_camera);
   }
-  std::vector<std::string> frames, scans, switches;
-  for (std::size_t j = 0; j < output.frames.size(); ++j) frames.push_back(frameJson(records, output, j, with_timings));
-  for (const ScanRecord& s : records.scans) scans.push_back(scanJson(s, with_timings));
-  for (const SwitchEvent& e : output.switches)
-    switches.push_back(JsonObject().addNumber("t", e.t).addString("to", sourceName(e.to)).addString("reason", e.reason).str());
-  JsonObject json;
-  json.addRaw("summary", summaryJson(summary, accuracy, with_timings))
-      .addRaw("switches", jsonList(switches))
-      .addRaw("frames", jsonList(frames))
-      .addRaw("scans", jsonList(scans));
-  if (output.loop) json.addRaw("loop", loopJson(*output.loop));
-  if (!records.extrinsic_checks.empty()) {
-    std::vector<std::string> checks;
-    for (const fusion::ExtrinsicVerdict& v : records.extrinsic_checks) checks.push_back(extrinsicCheckJson(v));
-    json.addRaw("extrinsic_check", jsonList(checks));
-  }
-  const std::string stats = json.str();
-  writeText(dir / "stats.json", stats + "\n");
+  writeStatsJson(dir / "stats.json", records, output, summaryJson(summary, accuracy, with_timings), with_timings);
   writePointCloudPly((dir / "map.ply").string(), output.lidar_map);
   writeLineSegmentsPly((dir / "lines.ply").string(), output.lines_world);
-}
-
-double peakResidentMiB() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // reported in kB
-  return 0.0;
 }
 
 }  // namespace lvslam::system

@@ -74,7 +74,4 @@ struct RunAccuracy {
 void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records, const SystemOutput& output,
                      const RunSummary& summary, const RunAccuracy& accuracy, bool with_timings);
 
-// Peak resident memory of this process (VmHWM), MiB; 0 when unknown.
-double peakResidentMiB();
-
 }  // namespace lvslam::system
