@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "lvslam/core/se3.h"
+#include "support/record_files.h"
 
 namespace lvslam::system {
 namespace {
@@ -55,7 +56,9 @@ TEST(PlaceOnFinalKeyframes, FramesFollowTheirKeyframesFinalPoses) {
   current.removeKeyframe(c);
   current.keyframe(b).T_camera_world = pose(1.1, 0.45);
 
-  placeOnFinalKeyframes(retired, current, frames);
+  RecordFile<VisualFrameRecord> file = testing::recordFileOf(frames);
+  placeOnFinalKeyframes(retired, current, file);
+  frames = testing::vectorOf(file);
   ASSERT_TRUE(frames[0].T_world_camera_final);
   EXPECT_TRUE(frames[0].T_world_camera_final->isApprox(pose(0.12, 0.25).inverse() * T_a_cam, 1e-12));
   ASSERT_TRUE(frames[0].initial_reference_final);

@@ -62,7 +62,7 @@ WorkerRun runWorker(int sweeps, const std::vector<int>& missing, const std::vect
   LidarWorker worker(config, calibration);
   WorkerRun run;
   worker.onFramePosed([&](std::size_t index, const LidarFrameRecord& record) {
-    run.calls.push_back({index, record, worker.scans().back().t});
+    run.calls.push_back({index, record, worker.scanTrajectory().back().t});
   });
   testing::SyntheticSensor sensor;
   sensor.columns = 360;

@@ -8,6 +8,7 @@
 #include "lvslam/core/yaml_config.h"
 #include "lvslam/io/recording.h"
 #include "lvslam/system/system_pipeline.h"
+#include "support/record_files.h"
 #include "system/sim_cache.h"
 
 namespace lvslam::system {
@@ -47,9 +48,9 @@ std::vector<FrameOutput> onlineOutput(RunMode mode, std::optional<double> cut) {
   RecordingRequest request;
   request.sequence_dir = dir;
   Recording recording = openRecording(request);
-  if (!cut) return runPipeline(*recording.source, config, {}).online;
+  if (!cut) return lvslam::testing::vectorOf(runPipeline(*recording.source, config, {}).online);
   CutSource source(*recording.source, *cut, 0.1);
-  return runPipeline(source, config, {}).online;
+  return lvslam::testing::vectorOf(runPipeline(source, config, {}).online);
 }
 
 class OnlineCausality : public ::testing::TestWithParam<RunMode> {};

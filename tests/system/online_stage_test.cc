@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/record_files.h"
+
 namespace lvslam::system {
 namespace {
 
@@ -73,8 +75,8 @@ TEST(OnlineStage, ItsLidarInputsReplayedMakeTheOnlineCallsAgain) {
     if (e.visual) stage.visualReady(e.index, VisualFrameRecord{});
     else stage.lidarReady(e.index, lidarTagged(e.tag));
   }
-  const std::vector<VisualFrameRecord> visual(4);
-  stage.finish(visual, {lidarTagged(2), lidarTagged(2), lidarTagged(1), lidarTagged(9)});
+  const RecordFile<VisualFrameRecord> visual = testing::recordFileOf(std::vector<VisualFrameRecord>(4));
+  stage.finish(visual, testing::recordFileOf(std::vector{lidarTagged(2), lidarTagged(2), lidarTagged(1), lidarTagged(9)}));
   ASSERT_EQ(online, (std::vector<std::string>{"add 0 v l1", "add 1 v l1", "improve 0 l2", "improve 1 l2",
                                               "add 2 v l1", "add 3 v l9"}));
   std::vector<std::string> replayed;
@@ -89,7 +91,8 @@ TEST(OnlineStage, AFrameTheLidarNeverPosedTakesTheWorkersFinalRecordAtTheEnd) {
   stage.visualReady(0, VisualFrameRecord{});
   stage.visualReady(1, VisualFrameRecord{});
   stage.lidarReady(0, lidarTagged(1));
-  stage.finish({VisualFrameRecord{}, VisualFrameRecord{}}, {lidarTagged(1), lidarTagged(7)});
+  stage.finish(testing::recordFileOf(std::vector<VisualFrameRecord>(2)),
+               testing::recordFileOf(std::vector{lidarTagged(1), lidarTagged(7)}));
   EXPECT_EQ(calls, (std::vector<std::string>{"add 0 v l1", "add 1 v l7"}));
 }
 

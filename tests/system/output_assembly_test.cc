@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "lvslam/core/se3.h"
+#include "support/record_files.h"
 
 namespace lvslam::system {
 namespace {
@@ -68,17 +69,34 @@ double translationDiff(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
 }
 double rotationDiff(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) { return rotationAngle(a.inverse() * b); }
 
+// What a test sets up: the per-frame records in memory (the pipeline keeps
+// them on disk, record_file.h) and the rest as the pipeline has it.
+struct Records {
+  std::vector<VisualFrameRecord> visual;
+  std::vector<LidarFrameRecord> lidar;
+  PipelineRecords other;
+};
+
+// The output, with the online output of each frame.
+struct Output : SystemOutput {
+  std::vector<FrameOutput> frames;
+};
+
 // The output as the pipeline makes it: the online output frame by frame
 // (online/online_output.h), then the assembly after the run.
-SystemOutput assembled(PipelineRecords records, const SystemConfig& config, const Eigen::Isometry3d& T_camera_lidar) {
+Output assembled(const Records& records, const SystemConfig& config, const Eigen::Isometry3d& T_camera_lidar) {
+  PipelineRecords pipeline = records.other;
+  pipeline.visual = testing::recordFileOf(records.visual);
+  pipeline.lidar = testing::recordFileOf(records.lidar);
   const std::unique_ptr<OnlineOutput> online = makeOnlineOutput(config, T_camera_lidar);
   const std::size_t frames = std::max(records.visual.size(), records.lidar.size());
   for (std::size_t j = 0; j < frames; ++j)
-    records.online.push_back(online->add(j < records.visual.size() ? &records.visual[j] : nullptr,
-                                         j < records.lidar.size() ? &records.lidar[j] : nullptr));
-  records.switches = online->switches();
-  records.T_world_map = online->mapPlacements();
-  return assembleOutput(records, config, T_camera_lidar);
+    pipeline.online.push_back(online->add(j < records.visual.size() ? &records.visual[j] : nullptr,
+                                          j < records.lidar.size() ? &records.lidar[j] : nullptr));
+  pipeline.switches = online->switches();
+  pipeline.T_world_map = online->mapPlacements();
+  Output out{assembleOutput(pipeline, config, T_camera_lidar), testing::vectorOf(pipeline.online)};
+  return out;
 }
 
 SystemConfig configFor(RunMode mode) {
@@ -90,12 +108,12 @@ SystemConfig configFor(RunMode mode) {
 // ---- lidar mode ----
 
 TEST(AssembleOutput, LidarModeGivesOdometryTimesExtrinsicsExactly) {
-  PipelineRecords records;
+  Records records;
   for (std::size_t j = 0; j < 12; ++j) {
     const double t = frameTime(j);
     records.lidar.push_back(lidarRecord(t, j == 0 ? std::nullopt : std::optional(exactOdomLidar(t))));
   }
-  const SystemOutput out = assembled(records, configFor(RunMode::kLidar), kTCameraLidar);
+  const Output out = assembled(records, configFor(RunMode::kLidar), kTCameraLidar);
   ASSERT_EQ(out.frames.size(), 12u);
   EXPECT_TRUE(out.trajectory_is_camera);
   EXPECT_TRUE(out.switches.empty());
@@ -115,9 +133,9 @@ TEST(AssembleOutput, LidarModeGivesOdometryTimesExtrinsicsExactly) {
 }
 
 TEST(AssembleOutput, LidarModeWithoutCameraOutputsTheScanTrajectory) {
-  PipelineRecords records;
-  for (int k = 0; k < 5; ++k) records.T_odom_lidar_scans.push_back({0.1 * k, exactOdomLidar(0.1 * k)});
-  const SystemOutput out = assembled(records, configFor(RunMode::kLidar), kTCameraLidar);
+  Records records;
+  for (int k = 0; k < 5; ++k) records.other.T_odom_lidar_scans.push_back({0.1 * k, exactOdomLidar(0.1 * k)});
+  const Output out = assembled(records, configFor(RunMode::kLidar), kTCameraLidar);
   EXPECT_FALSE(out.trajectory_is_camera);
   ASSERT_EQ(out.trajectory.size(), 5u);
   for (int k = 0; k < 5; ++k) {
@@ -127,10 +145,10 @@ TEST(AssembleOutput, LidarModeWithoutCameraOutputsTheScanTrajectory) {
 }
 
 TEST(AssembleOutput, FusionLinesAreMovedIntoTheWorldWithTheFramePose) {
-  PipelineRecords records;
+  Records records;
   records.lidar.push_back(lidarRecord(frameTime(0), exactOdomLidar(frameTime(0))));
   records.lidar[0].fusion_lines.push_back({Eigen::Vector3d(0.5, -0.2, 3.0), Eigen::Vector3d(0.5, 0.8, 3.1)});
-  const SystemOutput out = assembled(records, configFor(RunMode::kLidar), kTCameraLidar);
+  const Output out = assembled(records, configFor(RunMode::kLidar), kTCameraLidar);
   ASSERT_EQ(out.lines_world.size(), 1u);
   const Eigen::Isometry3d T = *out.frames[0].T_world_camera;
   EXPECT_LT((out.lines_world[0].a - T * Eigen::Vector3d(0.5, -0.2, 3.0)).norm(), 1e-12);
@@ -143,9 +161,9 @@ TEST(AssembleOutput, FusionLinesAreMovedIntoTheWorldWithTheFramePose) {
 
 // Map 0 starts at frame 5 (first view frame 0), tracks to frame 14, is lost
 // over 15..19; map 1 starts at frame 20 with its first view at frame 17.
-PipelineRecords twoVisualMaps(const Eigen::Isometry3d& T_map0_world, const Eigen::Isometry3d& T_map1_world,
+Records twoVisualMaps(const Eigen::Isometry3d& T_map0_world, const Eigen::Isometry3d& T_map1_world,
                               bool second_metric) {
-  PipelineRecords records;
+  Records records;
   for (std::size_t j = 0; j < 30; ++j) {
     const double t = frameTime(j);
     visual::VisualFrameResult r;
@@ -169,7 +187,7 @@ PipelineRecords twoVisualMaps(const Eigen::Isometry3d& T_map0_world, const Eigen
 TEST(AssembleOutput, VisualModeAnchorsTheSecondMapAtTheLastPoseOfTheFirst) {
   const Eigen::Isometry3d map0 = Eigen::Isometry3d::Identity();
   const Eigen::Isometry3d map1 = expSE3((Vector6d() << -5, 4, 2, 0.6, -0.3, 1.2).finished());
-  const SystemOutput out = assembled(twoVisualMaps(map0, map1, true), configFor(RunMode::kVisual), kTCameraLidar);
+  const Output out = assembled(twoVisualMaps(map0, map1, true), configFor(RunMode::kVisual), kTCameraLidar);
   ASSERT_EQ(out.frames.size(), 30u);
   EXPECT_TRUE(out.metric);
   // 10 tracked frames of each map; a map's first view (an earlier frame) had
@@ -203,14 +221,14 @@ TEST(AssembleOutput, VisualModeAnchorsTheSecondMapAtTheLastPoseOfTheFirst) {
 // trajectory hold them (unless the configuration asks for the poses as
 // tracked); the online output never does.
 TEST(AssembleOutput, VisualPosesOnTheFinalKeyframesAreRefinement) {
-  PipelineRecords records = twoVisualMaps(Eigen::Isometry3d::Identity(), Eigen::Isometry3d::Identity(), true);
+  Records records = twoVisualMaps(Eigen::Isometry3d::Identity(), Eigen::Isometry3d::Identity(), true);
   const auto shifted = [](std::size_t j) { return expSE3((Vector6d() << 0.01 * j, 0.02, -0.01, 0.001 * j, 0, 0).finished()); };
   for (std::size_t j = 5; j < 15; ++j) records.visual[j].T_world_camera_final = trueCamera(frameTime(j)) * shifted(j);
   records.visual[5].initial_reference_final = trueCamera(frameTime(0)) * shifted(0);
   for (const bool final_poses : {true, false}) {
     SystemConfig config = configFor(RunMode::kVisual);
     config.final_map_poses = final_poses;
-    const SystemOutput out = assembled(records, config, kTCameraLidar);
+    const Output out = assembled(records, config, kTCameraLidar);
     const auto refinedAt = [&](double t) {
       const auto it = std::find_if(out.trajectory_refined.begin(), out.trajectory_refined.end(),
                                    [t](const StampedPose& p) { return p.t == t; });
@@ -239,12 +257,12 @@ TEST(AssembleOutput, VisualPosesOnTheFinalKeyframesAreRefinement) {
 // into the output world with that map's own anchor.
 TEST(AssembleOutput, LinesOfEveryVisualMapAreMovedWithTheirMapsAnchor) {
   const Eigen::Isometry3d map1 = expSE3((Vector6d() << -5, 4, 2, 0.6, -0.3, 1.2).finished());
-  PipelineRecords records = twoVisualMaps(Eigen::Isometry3d::Identity(), map1, true);
+  Records records = twoVisualMaps(Eigen::Isometry3d::Identity(), map1, true);
   const Eigen::Vector3d A_world(1.0, 2.0, 3.0), B_world(1.5, 2.0, 4.0);
-  records.visual_lines.push_back({A_world, B_world, false, 0, std::nullopt});              // map 0's frame is the world
-  records.visual_lines.push_back({map1 * A_world, map1 * B_world, true, 1, std::nullopt});  // the same line seen by map 1
-  records.visual_lines.push_back({A_world, B_world, false, 2, std::nullopt});              // a map the output never used
-  const SystemOutput out = assembled(records, configFor(RunMode::kVisual), kTCameraLidar);
+  records.other.visual_lines.push_back({A_world, B_world, false, 0, std::nullopt});              // map 0's frame is the world
+  records.other.visual_lines.push_back({map1 * A_world, map1 * B_world, true, 1, std::nullopt});  // the same line seen by map 1
+  records.other.visual_lines.push_back({A_world, B_world, false, 2, std::nullopt});              // a map the output never used
+  const Output out = assembled(records, configFor(RunMode::kVisual), kTCameraLidar);
   ASSERT_EQ(out.lines_world.size(), 2u);
   EXPECT_LT((out.lines_world[0].a - A_world).norm(), 1e-9);
   EXPECT_LT((out.lines_world[0].b - B_world).norm(), 1e-9);
@@ -260,7 +278,7 @@ TEST(AssembleOutput, LinesOfEveryVisualMapAreMovedWithTheirMapsAnchor) {
 // the map points added at its time did (the keyframe correction before its
 // first keyframe's time; a fusion line, its frame's time).
 TEST(AssembleOutput, LoopClosureMovesEachLineWithTheMapOfItsTime) {
-  PipelineRecords records;
+  Records records;
   for (std::size_t j = 0; j < 3; ++j) records.lidar.push_back(lidarRecord(frameTime(j), exactOdomLidar(frameTime(j))));
   const Eigen::Vector3d A(0.5, -0.2, 3.0), B(0.5, 0.8, 3.1);
   records.lidar[2].fusion_lines.push_back({A, B});
@@ -270,20 +288,21 @@ TEST(AssembleOutput, LoopClosureMovesEachLineWithTheMapOfItsTime) {
   const Eigen::Isometry3d D = expSE3((Vector6d() << 0.3, -0.1, 0.2, 0.02, -0.05, 0.1).finished());
   loop.T_odom_lidar_corrected = {loop.T_odom_lidar[0], D * loop.T_odom_lidar[1]};
   loop.solved = true;
-  records.loop = loop;
+  records.other.loop = loop;
   // Lines of visual map 0 (placed at the world origin below): one first
   // seen before the corrected keyframe, one after it, one never observed.
-  records.visual_lines.push_back({A, B, false, 0, frameTime(1)});
-  records.visual_lines.push_back({A, B, false, 0, frameTime(2)});
-  records.visual_lines.push_back({A, B, false, 0, std::nullopt});
+  records.other.visual_lines.push_back({A, B, false, 0, frameTime(1)});
+  records.other.visual_lines.push_back({A, B, false, 0, frameTime(2)});
+  records.other.visual_lines.push_back({A, B, false, 0, std::nullopt});
   SystemConfig config = configFor(RunMode::kLidar);
-  PipelineRecords placed = records;
+  PipelineRecords placed = records.other;
+  placed.lidar = testing::recordFileOf(records.lidar);
   placed.T_world_map[0] = Eigen::Isometry3d::Identity();
   const std::unique_ptr<OnlineOutput> online = makeOnlineOutput(config, kTCameraLidar);
-  for (const LidarFrameRecord& l : placed.lidar) placed.online.push_back(online->add(nullptr, &l));
+  for (const LidarFrameRecord& l : records.lidar) placed.online.push_back(online->add(nullptr, &l));
   const SystemOutput out = assembleOutput(placed, config, kTCameraLidar);
   ASSERT_EQ(out.lines_world.size(), 4u);
-  const Eigen::Isometry3d T = *out.frames[2].T_world_camera;
+  const Eigen::Isometry3d T = *placed.online[2].T_world_camera;
   EXPECT_LT((out.lines_world[0].a - D * T * A).norm(), 1e-9);  // the fusion line of frame 2, after the keyframe
   EXPECT_LT((out.lines_world[0].b - D * T * B).norm(), 1e-9);
   EXPECT_LT((out.lines_world[1].a - A).norm(), 1e-9);  // first seen before it: the first keyframe's (none) correction
@@ -308,7 +327,7 @@ Eigen::Isometry3d driftingVisual(const Eigen::Isometry3d& T_map_world, std::size
 }
 
 struct FusedScenario {
-  PipelineRecords records;
+  Records records;
   std::size_t blackout_begin = 20, blackout_end = 30;  // frames [begin, end) are black
 };
 
@@ -342,7 +361,7 @@ FusedScenario blackoutScenario(std::size_t frames) {
 // Whose motion each output step follows: the visual map's while vision stays
 // in use in the same map, the LiDAR's otherwise (including the frame of a
 // switch, where the visual map is re-anchored, so there is no jump).
-void expectStepsFollowTheSource(const PipelineRecords& records, const SystemOutput& out) {
+void expectStepsFollowTheSource(const Records& records, const Output& out) {
   const Eigen::Isometry3d T_lidar_camera = kTCameraLidar.inverse();
   for (std::size_t j = 1; j < out.frames.size(); ++j) {
     ASSERT_TRUE(out.frames[j - 1].T_world_camera && out.frames[j].T_world_camera) << j;
@@ -371,7 +390,7 @@ TEST(AssembleOutput, FusedKeepsEachSubsystemsOwnTrajectory) {
   FusedScenario s = blackoutScenario(40);
   s.records.visual[30].result.initial_reference = StampedPose{frameTime(27), Eigen::Isometry3d::Identity()};
   s.records.lidar[5].T_odom_lidar.reset();  // a frame the LiDAR has no pose for
-  const SystemOutput out = assembled(s.records, configFor(RunMode::kFused), kTCameraLidar);
+  const Output out = assembled(s.records, configFor(RunMode::kFused), kTCameraLidar);
   ASSERT_EQ(out.visual_maps.size(), 2u);
   const Trajectory& map0 = out.visual_maps.at(0);
   const Trajectory& map1 = out.visual_maps.at(1);
@@ -414,7 +433,7 @@ TEST(AssembleOutput, FusedUsesTheFirstVisualMapFromItsFirstHealthyFrame) {
   }
   SystemConfig config = paperOutputConfig();
   config.detection.frames_to_recover = 6;
-  const SystemOutput out = assembled(s.records, config, kTCameraLidar);
+  const Output out = assembled(s.records, config, kTCameraLidar);
   ASSERT_EQ(out.frames.size(), 20u);
   for (std::size_t j = 0; j < 3; ++j) {
     EXPECT_EQ(out.frames[j].source, OutputSource::kLidar) << j;
@@ -433,7 +452,7 @@ TEST(AssembleOutput, FusedBlackoutSwitchesToLidarAtOnceAndBackWithoutJumps) {
   FusedScenario s = blackoutScenario(50);
   SystemConfig config = paperOutputConfig();
   config.detection.frames_to_recover = 5;
-  const SystemOutput out = assembled(s.records, config, kTCameraLidar);
+  const Output out = assembled(s.records, config, kTCameraLidar);
   ASSERT_EQ(out.frames.size(), 50u);
   ASSERT_EQ(out.switches.size(), 3u);
   EXPECT_EQ(out.switches[0].to, OutputSource::kVisual);
@@ -457,7 +476,7 @@ TEST(AssembleOutput, FusedNeverUsesANonMetricVisualMap) {
   for (VisualFrameRecord& v : s.records.visual) v.result.metric = false;
   SystemConfig config = configFor(RunMode::kFused);
   config.detection.frames_to_recover = 2;
-  const SystemOutput out = assembled(s.records, config, kTCameraLidar);
+  const Output out = assembled(s.records, config, kTCameraLidar);
   EXPECT_TRUE(out.switches.empty());
   for (std::size_t j = 0; j < out.frames.size(); ++j) EXPECT_EQ(out.frames[j].source, OutputSource::kLidar) << j;
   EXPECT_NE(out.frames[10].problem.find("metric"), std::string::npos) << out.frames[10].problem;
@@ -474,7 +493,7 @@ TEST(AssembleOutput, FusedSkipsFramesBeforeTheFirstLidarPose) {
   FusedScenario s = blackoutScenario(10);
   s.records.lidar[0].T_odom_lidar.reset();
   s.records.lidar[1].T_odom_lidar.reset();
-  const SystemOutput out = assembled(s.records, configFor(RunMode::kFused), kTCameraLidar);
+  const Output out = assembled(s.records, configFor(RunMode::kFused), kTCameraLidar);
   EXPECT_FALSE(out.frames[0].T_world_camera);
   EXPECT_FALSE(out.frames[1].T_world_camera);
   ASSERT_TRUE(out.frames[2].T_world_camera);

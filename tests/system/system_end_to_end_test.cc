@@ -11,6 +11,7 @@
 
 #include "lvslam/core/se3.h"
 #include "lvslam/system/run_recording.h"
+#include "support/record_files.h"
 #include "support/temp_dir.h"
 #include "support/trajectory_at.h"
 #include "system/sim_cache.h"
@@ -207,9 +208,10 @@ TEST(SystemEndToEnd, BlackoutSwitchesToLidarAndBackDeterministically) {
                                                              e.to == OutputSource::kVisual ? "visual" : "lidar",
                                                              e.reason.c_str());
   // The scenario's premise: vision is the output when the images go black.
-  const auto before = std::find_if(r.output.frames.rbegin(), r.output.frames.rend(),
+  const std::vector<FrameOutput> frames = lvslam::testing::vectorOf(r.records.online);
+  const auto before = std::find_if(frames.rbegin(), frames.rend(),
                                    [&](const FrameOutput& f) { return f.t < b0; });
-  ASSERT_NE(before, r.output.frames.rend());
+  ASSERT_NE(before, frames.rend());
   ASSERT_EQ(before->source, OutputSource::kVisual) << "vision is not in use before the blackout";
   const auto to_lidar = std::find_if(r.output.switches.begin(), r.output.switches.end(),
                                      [&](const SwitchEvent& e) { return e.to == OutputSource::kLidar && e.t >= b0; });
@@ -217,7 +219,7 @@ TEST(SystemEndToEnd, BlackoutSwitchesToLidarAndBackDeterministically) {
   EXPECT_LE(to_lidar->t, b0 + 1.0 / 15.0 + 1e-6);  // the first black image (15 Hz)
   EXPECT_NE(to_lidar->reason.find("dark"), std::string::npos) << to_lidar->reason;
   // ... LiDAR throughout the blackout, every frame posed ...
-  for (const FrameOutput& f : r.output.frames) {
+  for (const FrameOutput& f : frames) {
     EXPECT_TRUE(f.T_world_camera.has_value()) << f.t - options.start_time;
     if (f.t >= b0 && f.t <= b1) {
       EXPECT_EQ(f.source, OutputSource::kLidar) << f.t - options.start_time;
@@ -237,14 +239,14 @@ TEST(SystemEndToEnd, BlackoutSwitchesToLidarAndBackDeterministically) {
   // visual estimate's jitter is below 2 cm per step (a frame moves up to
   // 2.7 cm), and where the LiDAR is the output no step is worse than the
   // LiDAR's own worst (its sweep-to-sweep corrections, 2-4 cm here).
-  ASSERT_EQ(r.output.trajectory.size(), r.output.frames.size());
+  ASSERT_EQ(r.output.trajectory.size(), frames.size());
   const std::vector<double> errors = stepErrors(r.output.trajectory, det1.ground_truth);
   const SimRun lidar = runOn(kBlackoutName, options, RunMode::kLidar, true);
   const std::vector<double> lidar_errors = stepErrors(lidar.result.output.trajectory, lidar.ground_truth);
   const double lidar_worst = *std::max_element(lidar_errors.begin(), lidar_errors.end());
   double worst = 0.0, worst_lidar_sourced = 0.0;
   for (std::size_t k = 1; k < r.output.trajectory.size(); ++k) {
-    const bool from_lidar = r.output.frames[k].source == OutputSource::kLidar;
+    const bool from_lidar = frames[k].source == OutputSource::kLidar;
     (from_lidar ? worst_lidar_sourced : worst) = std::max(from_lidar ? worst_lidar_sourced : worst, errors[k - 1]);
   }
   std::printf("[ figures  ] largest step error %.4f m (vision the output), %.4f m (LiDAR; LiDAR alone %.4f m)\n",

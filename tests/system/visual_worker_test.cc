@@ -105,9 +105,11 @@ TEST(VisualWorker, KeyframeDepthsFromScansAreRecordedAndNothingIsAskedOfTheFusio
   VisualWorker worker(config, calibrationOfTheRoom(), true);
   const std::vector<Tracked> tracked = feed(worker, 0.6, 1.45, applyOneLine);
   ASSERT_EQ(worker.frameCount(), tracked.size());
+  const RecordFile<VisualFrameRecord> frames = worker.takeFrames();
+  ASSERT_EQ(frames.size(), tracked.size());
   int keyframes = 0, with_depths = 0;
   for (std::size_t i = 0; i < tracked.size(); ++i) {
-    const VisualFrameRecord& record = worker.frames()[i];
+    const VisualFrameRecord record = frames[i];
     EXPECT_EQ(record.t, tracked[i].t);
     EXPECT_EQ(record.extract_ms, 1.5 + i);
     EXPECT_TRUE(tracked[i].returned.empty()) << "frame " << i;
@@ -134,7 +136,7 @@ std::size_t framesKeepingObservations(const SystemConfig& config) {
   VisualWorker worker(config, calibrationOfTheRoom(), true);
   feed(worker, 0.6, 1.45);
   std::size_t kept = 0;
-  for (const VisualFrameRecord& record : worker.frames())
+  for (const VisualFrameRecord& record : worker.takeFrames())
     kept += record.result.replay.observations.points.empty() ? 0 : 1;
   return kept;
 }
@@ -160,6 +162,7 @@ TEST(VisualWorker, WithDepthsFromFeaturesAKeyframeReturnsItsKeypointsForTheFusio
   config.fusion_lines_in_tracking = false;  // ablation "fusion-lines": answers bring no landmark
   VisualWorker worker(config, calibrationOfTheRoom(), true);
   const std::vector<Tracked> tracked = feed(worker, 0.6, 1.45, applyOneLine);
+  const RecordFile<VisualFrameRecord> frames = worker.takeFrames();
   int keyframes = 0;
   for (std::size_t i = 0; i < tracked.size(); ++i) {
     const bool keyframe = tracked[i].pose_valid && tracked[i].keyframe;
@@ -170,8 +173,8 @@ TEST(VisualWorker, WithDepthsFromFeaturesAKeyframeReturnsItsKeypointsForTheFusio
       for (std::size_t k = 0; k < tracked[i].returned.size(); ++k)
         EXPECT_EQ(tracked[i].returned[k], tracked[i].keypoints[k]);
     }
-    EXPECT_EQ(worker.frames()[i].keypoint_depths, 0u);  // none from the raw scans
-    EXPECT_EQ(worker.frames()[i].fusion_lines_added, 0);
+    EXPECT_EQ(frames[i].keypoint_depths, 0u);  // none from the raw scans
+    EXPECT_EQ(frames[i].fusion_lines_added, 0);
   }
   EXPECT_GE(keyframes, 2);
 }

@@ -13,26 +13,27 @@ const visual::VisualMap* mapWithId(const std::vector<visual::VisualMap>& retired
 }  // namespace
 
 void placeOnFinalKeyframes(const std::vector<visual::VisualMap>& retired, const visual::VisualMap& current,
-                           std::vector<VisualFrameRecord>& frames) {
-  for (VisualFrameRecord& frame : frames) {
+                           RecordFile<VisualFrameRecord>& frames) {
+  frames.update([&](VisualFrameRecord& frame) {
     const visual::VisualFrameResult& r = frame.result;
-    if (!r.pose_valid) continue;
+    if (!r.pose_valid) return;
     const visual::VisualMap* map = mapWithId(retired, current, r.map_id);
-    if (map == nullptr) continue;
+    if (map == nullptr) return;
     if (r.replay.reference_keyframe >= 0)
       if (const auto T_keyframe_world = map->keyframePose(r.replay.reference_keyframe))
         frame.T_world_camera_final = T_keyframe_world->inverse() * r.replay.T_keyframe_camera;
     if (r.initial_reference && r.initial_reference_keyframe >= 0)
       if (const auto T_first_world = map->keyframePose(r.initial_reference_keyframe))
         frame.initial_reference_final = T_first_world->inverse();
-  }
+  });
 }
 
-void relocateInFinalMaps(const visual::VisualSlam& slam, std::vector<VisualFrameRecord>& frames) {
-  for (VisualFrameRecord& frame : frames)
+void relocateInFinalMaps(const visual::VisualSlam& slam, RecordFile<VisualFrameRecord>& frames) {
+  frames.update([&slam](VisualFrameRecord& frame) {
     if (frame.T_world_camera_final)
       if (const auto T = slam.relocateInFinalMap(frame.result, *frame.T_world_camera_final))
         frame.T_world_camera_final = *T;
+  });
 }
 
 Eigen::Isometry3d visualPoseOf(const VisualFrameRecord& v, bool final_poses) {

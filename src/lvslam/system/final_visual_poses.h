@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/record_file.h"
 #include "lvslam/visual/data/visual_map.h"
 #include "lvslam/visual/visual_slam.h"
 
@@ -17,14 +18,14 @@ namespace lvslam::system {
 // a pose whose keyframe its map knows. Map id i < retired.size() is
 // retired[i], id retired.size() the current map (VisualSlam's numbering).
 void placeOnFinalKeyframes(const std::vector<visual::VisualMap>& retired, const visual::VisualMap& current,
-                           std::vector<VisualFrameRecord>& frames);
+                           RecordFile<VisualFrameRecord>& frames);
 
 // Then each placed frame that is not a keyframe is optimised again, from its
 // placed pose, on the observations it was tracked with, against its map's
 // landmarks as they stand at the end (VisualSlam::relocateInFinalMap): local
 // BA went on moving those landmarks after the frame was tracked. A frame too
 // few of whose landmarks remain keeps its placed pose.
-void relocateInFinalMaps(const visual::VisualSlam& slam, std::vector<VisualFrameRecord>& frames);
+void relocateInFinalMaps(const visual::VisualSlam& slam, RecordFile<VisualFrameRecord>& frames);
 
 // A frame's visual pose in its map: on the final keyframes when asked and
 // known, else as tracked; and likewise the map's first view (a frame with

@@ -1,5 +1,6 @@
 #include "lvslam/system/lidar_worker.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "lvslam/core/se3.h"
@@ -64,10 +65,31 @@ FusionAnswer LidarWorker::addFrame(double t, const std::vector<fusion::ImageSegm
     checkExtrinsic(t, segments);
     record.fusion_ms = watch.ms();  // the check included: it is fusion work
   }
-  frames_waiting_.push_back(frames_.size());
-  frames_.push_back(std::move(record));
+  closeFinishedFrames();  // the previous frame's fusion answer is complete
+  frames_waiting_.push_back(first_open_ + open_frames_.size());
+  open_frames_.push_back(std::move(record));
   answer.lidar_camera_poses.swap(new_camera_poses_);
   return answer;
+}
+
+// A frame no scan will pose or interpolate again, whose fusion answer is
+// complete (any but the last added), goes to disk.
+void LidarWorker::closeFinishedFrames() {
+  std::size_t first_pending = first_open_ + open_frames_.size();
+  for (const std::size_t index : frames_waiting_) first_pending = std::min(first_pending, index);
+  for (const std::size_t index : frames_provisional_) first_pending = std::min(first_pending, index);
+  while (open_frames_.size() > 1 && first_open_ < first_pending) {
+    frames_.push_back(open_frames_.front());
+    open_frames_.pop_front();
+    ++first_open_;
+  }
+}
+
+RecordFile<LidarFrameRecord> LidarWorker::takeFrames() {
+  for (const LidarFrameRecord& frame : open_frames_) frames_.push_back(frame);
+  first_open_ += open_frames_.size();
+  open_frames_.clear();
+  return std::move(frames_);
 }
 
 // Every window's verdict goes to stats.json (extrinsic_check). No warning
@@ -85,12 +107,12 @@ void LidarWorker::recordExtrinsicVerdict(const std::optional<fusion::ExtrinsicVe
 }
 
 std::vector<double> LidarWorker::keypointDepths(const std::vector<Eigen::Vector2d>& keyframe_keypoints) {
-  if (!fusion_frame_ || keyframe_keypoints.empty() || frames_.empty()) return {};
+  if (!fusion_frame_ || keyframe_keypoints.empty() || open_frames_.empty()) return {};
   const Stopwatch watch;
   std::vector<double> depths =
       fusion_->framework().pointDepths(T_world_lidar_last_frame_, keyframe_keypoints, keypoint_depth_radius_px_);
-  frames_.back().fusion_ms += watch.ms();
-  frames_.back().keypoint_depths = depthCount(depths);
+  open_frames_.back().fusion_ms += watch.ms();
+  open_frames_.back().keypoint_depths = depthCount(depths);
   return depths;
 }
 
@@ -113,7 +135,7 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable, bool prior_
   const StampedPose& last = scan_trajectory_.back();
   const double sweep = scan_trajectory_.size() >= 2 ? last.t - scan_trajectory_[scan_trajectory_.size() - 2].t : 0.0;
   const auto pose = [&](std::size_t index, const Eigen::Isometry3d& T_odom_lidar, bool measured = true) {
-    LidarFrameRecord& frame = frames_[index];
+    LidarFrameRecord& frame = openFrame(index);
     frame.T_odom_lidar = T_odom_lidar;
     frame.pose_reliable = reliable && measured;
     frame.information = last_information_;
@@ -123,19 +145,19 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable, bool prior_
   };
   std::vector<std::size_t> still_provisional;
   for (const std::size_t index : frames_provisional_) {
-    const LidarFrameRecord& frame = frames_[index];
+    const LidarFrameRecord& frame = openFrame(index);
     if (frame.t > last.t || scan_trajectory_.size() < 2) {
       still_provisional.push_back(index);
       continue;
     }
     const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
     pose(index, interpolateAtTime(frame.t, before.t, before.T_world_frame, last.t, last.T_world_frame));
-    if (prior_worthy && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frames_[index].T_odom_lidar * *T_lidar_camera_});
+    if (prior_worthy && T_lidar_camera_) new_camera_poses_.push_back({frame.t, *frame.T_odom_lidar * *T_lidar_camera_});
   }
   frames_provisional_ = std::move(still_provisional);
   std::vector<std::size_t> still_waiting;
   for (const std::size_t index : frames_waiting_) {
-    const double t = frames_[index].t;
+    const double t = openFrame(index).t;
     if (scan_trajectory_.size() >= 3 && t < last.t) {
       // No registered sweep covers the frame (a drop-out, or a sweep the
       // odometry rejected; the first sweep, whose length was unknown, posed
@@ -153,6 +175,7 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable, bool prior_
     }
   }
   frames_waiting_ = std::move(still_waiting);
+  closeFinishedFrames();
 }
 
 void LidarWorker::registerPending() {

@@ -8,6 +8,7 @@
 // covering that time is registered, and a better one interpolated between
 // two sweeps once the next is; in fused mode that one, in the camera frame,
 // goes back to the visual side with a later frame's answer.
+#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "lvslam/fusion/fusion_step.h"
 #include "lvslam/lidar/lidar_odometry.h"
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/record_file.h"
 #include "lvslam/system/lidar_map_export.h"
 #include "lvslam/system/offline/loop_closure_worker.h"
 #include "lvslam/system/system_config.h"
@@ -52,8 +54,9 @@ class LidarWorker {
   using FramePosed = std::function<void(std::size_t index, const LidarFrameRecord& record)>;
   void onFramePosed(FramePosed callback) { on_frame_posed_ = std::move(callback); }
 
-  const std::vector<ScanRecord>& scans() const { return scans_; }
-  const std::vector<LidarFrameRecord>& frames() const { return frames_; }
+  // The records of every scan and camera frame, handed over after finish().
+  RecordFile<ScanRecord> takeScans() { return std::move(scans_); }
+  RecordFile<LidarFrameRecord> takeFrames();
   const LidarMapExport& map() const { return map_; }
   // T_odom_lidar at each registered scan's time stamp.
   const Trajectory& scanTrajectory() const { return scan_trajectory_; }
@@ -96,8 +99,14 @@ class LidarWorker {
   Matrix6d last_information_ = Matrix6d::Zero();  // of the last registered scan
   bool last_degenerate_ = false;                  // likewise: blind along some direction
   FramePosed on_frame_posed_;
-  std::vector<ScanRecord> scans_;
-  std::vector<LidarFrameRecord> frames_;
+  RecordFile<ScanRecord> scans_;
+  // Frames [0, first_open_) on disk; from first_open_ on in memory, as long
+  // as a pose, an interpolation or the fusion answer may still change them.
+  RecordFile<LidarFrameRecord> frames_;
+  std::deque<LidarFrameRecord> open_frames_;
+  std::size_t first_open_ = 0;
+  LidarFrameRecord& openFrame(std::size_t index) { return open_frames_[index - first_open_]; }
+  void closeFinishedFrames();
   Trajectory scan_trajectory_;
   std::optional<loop::KeyframeSelector> keyframe_selector_;
   std::unique_ptr<LoopClosureWorker> loop_closure_;

@@ -27,11 +27,13 @@ void addLines(const PipelineRecords& records, const std::optional<LoopCorrection
   const auto correctedAt = [&loop](std::optional<double> t) {
     return loop && t ? loop->atTime(*t) : Eigen::Isometry3d::Identity();
   };
-  for (std::size_t j = 0; j < records.lidar.size() && j < out.frames.size(); ++j) {
-    const auto& T = out.frames[j].T_world_camera;
+  auto lidar = records.lidar.begin();
+  for (auto frame = records.online.begin(); frame != records.online.end() && lidar != records.lidar.end();
+       ++frame, ++lidar) {
+    const auto& T = frame->T_world_camera;
     if (!T) continue;
-    const Eigen::Isometry3d T_placed = correctedAt(out.frames[j].t) * *T;
-    for (const CameraLine& line : records.lidar[j].fusion_lines)
+    const Eigen::Isometry3d T_placed = correctedAt(frame->t) * *T;
+    for (const CameraLine& line : lidar->fusion_lines)
       out.lines_world.push_back(coloured(T_placed * line.A, T_placed * line.B, 255, 0));
   }
   for (const MapLine& line : records.visual_lines) {
@@ -65,14 +67,13 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
                             const Eigen::Isometry3d& T_camera_lidar) {
   SystemOutput out;
   const Eigen::Isometry3d T_lidar_camera = T_camera_lidar.inverse();
-  out.frames = records.online;
   out.switches = records.switches;
   out.T_world_map = records.T_world_map;
   if (config.mode == RunMode::kLidar && records.lidar.empty()) {  // no camera: the LiDAR's own trajectory
     out.trajectory = records.T_odom_lidar_scans;
     out.trajectory_is_camera = false;
   }
-  for (const FrameOutput& frame : out.frames)
+  for (const FrameOutput& frame : records.online)
     if (frame.T_world_camera) out.trajectory.push_back({frame.t, *frame.T_world_camera});
   if (config.mode == RunMode::kVisual) {
     bool any_pose = false;

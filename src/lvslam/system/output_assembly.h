@@ -24,7 +24,6 @@ struct SystemOutput {
   Trajectory trajectory_refined;
   bool trajectory_is_camera = true;
   bool metric = true;  // false: a monocular visual run without LiDAR depth
-  std::vector<FrameOutput> frames;  // per camera frame, online
   std::vector<SwitchEvent> switches;
   // Where each visual map that reached the output sits in its world.
   std::map<int, Eigen::Isometry3d> T_world_map;

@@ -57,9 +57,11 @@ std::string visualJson(const VisualFrameRecord& v) {
 
 std::string frameJson(const PipelineRecords& records, const SystemOutput& output, std::size_t j, bool timings) {
   // The online part is what stats_frames.jsonl streamed during the run.
-  JsonObject o = onlineFrameJson(output.frames[j], timings);
-  const VisualFrameRecord* v = j < records.visual.size() ? &records.visual[j] : nullptr;
-  const LidarFrameRecord* l = j < records.lidar.size() ? &records.lidar[j] : nullptr;
+  JsonObject o = onlineFrameJson(records.online[j], timings);
+  const std::optional<VisualFrameRecord> visual = j < records.visual.size() ? std::optional(records.visual[j]) : std::nullopt;
+  const std::optional<LidarFrameRecord> lidar = j < records.lidar.size() ? std::optional(records.lidar[j]) : std::nullopt;
+  const VisualFrameRecord* v = visual ? &*visual : nullptr;
+  const LidarFrameRecord* l = lidar ? &*lidar : nullptr;
   if (v) o.addRaw("visual", visualJson(*v));
   if (l && v)
     o.addRaw("fusion", JsonObject()
@@ -158,33 +160,35 @@ double lostFraction(const PipelineRecords& records, const SystemOutput& output, 
   if (mode == RunMode::kVisual)
     for (const VisualFrameRecord& v : records.visual) missing += !v.result.pose_valid;
   else
-    for (const FrameOutput& f : output.frames) missing += !f.T_world_camera;
+    for (const FrameOutput& f : records.online) missing += !f.T_world_camera;
   return share(missing, records.images);
 }
 
-// Mean of the frames' visual consistency over [begin, end), -1 without any.
-double meanConsistency(const std::vector<FrameOutput>& frames, std::size_t begin, std::size_t end) {
+// Mean of the frames' visual consistency (-1: none) over [begin, end), -1 without any.
+double meanConsistency(const std::vector<double>& chi_square_per_dof, std::size_t begin, std::size_t end) {
   double sum = 0.0;
   std::size_t count = 0;
   for (std::size_t j = begin; j < end; ++j)
-    if (frames[j].visual_chi_square_per_dof >= 0.0) {
-      sum += frames[j].visual_chi_square_per_dof;
+    if (chi_square_per_dof[j] >= 0.0) {
+      sum += chi_square_per_dof[j];
       ++count;
     }
   return count == 0 ? -1.0 : sum / static_cast<double>(count);
 }
 
-void addOnlineFigures(const std::vector<FrameOutput>& frames, RunSummary& s) {
-  std::vector<double> latencies;
+void addOnlineFigures(const RecordFile<FrameOutput>& frames, RunSummary& s) {
+  std::vector<double> latencies, consistency;
   for (const FrameOutput& f : frames) {
     latencies.push_back(f.latency_ms);
+    consistency.push_back(f.visual_chi_square_per_dof);
     for (const GateEvent& g : f.gated) (g.source == FactorSource::kLidar ? s.gated_lidar : s.gated_visual) += 1;
   }
   s.latency_median_ms = eval::quantile(latencies, 0.5);
   s.latency_p95_ms = eval::quantile(latencies, 0.95);
   s.latency_max_ms = latencies.empty() ? 0.0 : *std::max_element(latencies.begin(), latencies.end());
-  s.visual_consistency_first = meanConsistency(frames, 0, frames.size() / 3);
-  s.visual_consistency_last = meanConsistency(frames, frames.size() - frames.size() / 3, frames.size());
+  const std::size_t n = consistency.size();
+  s.visual_consistency_first = meanConsistency(consistency, 0, n / 3);
+  s.visual_consistency_last = meanConsistency(consistency, n - n / 3, n);
 }
 
 }  // namespace
@@ -209,7 +213,7 @@ RunSummary summarize(const PipelineRecords& records, const SystemOutput& output,
   }
   s.visual_maps = maps.size();
   if (mode == RunMode::kFused)
-    for (const FrameOutput& f : output.frames) {
+    for (const FrameOutput& f : records.online) {
       s.visual_output += f.source == OutputSource::kVisual && f.T_world_camera;
       s.fused_output += f.fused && f.T_world_camera;
     }
@@ -219,7 +223,7 @@ RunSummary summarize(const PipelineRecords& records, const SystemOutput& output,
   s.fusion_lines_per_frame = records.lidar.empty() ? 0.0 : static_cast<double>(lines) / records.lidar.size();
   s.switches = output.switches.size();
   s.lost_fraction = lostFraction(records, output, mode);
-  addOnlineFigures(output.frames, s);
+  addOnlineFigures(records.online, s);
   s.sequence_seconds = records.last_time - records.first_time;
   s.wall_seconds = wall_seconds;
   s.real_time_factor = wall_seconds > 0.0 ? s.sequence_seconds / wall_seconds : 0.0;
@@ -273,7 +277,7 @@ void writeStatsJson(const std::filesystem::path& path, const PipelineRecords& re
     const SwitchEvent& e = output.switches[i];
     return JsonObject().addNumber("t", e.t).addString("to", sourceName(e.to)).addString("reason", e.reason).str();
   });
-  writeJsonList(member("frames"), output.frames.size(),
+  writeJsonList(member("frames"), records.online.size(),
                 [&](std::size_t j) { return frameJson(records, output, j, with_timings); });
   writeJsonList(member("scans"), records.scans.size(),
                 [&](std::size_t i) { return scanJson(records.scans[i], with_timings); });

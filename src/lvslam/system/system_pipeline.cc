@@ -219,17 +219,18 @@ void workerLoop(BoundedQueue<Job>& queue, Failure& failure, Run run, const std::
 }
 
 PipelineRecords collect(Workers& workers, OnlineStage& stage, bool relocate, PipelineRecords records) {
-  static const std::vector<VisualFrameRecord> no_visual;
-  static const std::vector<LidarFrameRecord> no_lidar;
-  stage.finish(workers.visual ? workers.visual->frames() : no_visual, workers.lidar ? workers.lidar->frames() : no_lidar);
+  if (workers.visual) records.visual = workers.visual->takeFrames();
+  if (workers.lidar) {
+    records.lidar = workers.lidar->takeFrames();
+    records.scans = workers.lidar->takeScans();
+  }
+  stage.finish(records.visual, records.lidar);
   records.online_end = std::chrono::steady_clock::now();
   records.online = stage.takeFrames();
   records.lidar_inputs = stage.takeLidarInputs();
   records.switches = stage.output().switches();
   records.T_world_map = stage.output().mapPlacements();
   if (workers.lidar) {
-    records.lidar = workers.lidar->frames();
-    records.scans = workers.lidar->scans();
     records.T_odom_lidar_scans = workers.lidar->scanTrajectory();
     records.lidar_map = workers.lidar->map().points();
     records.loop = workers.lidar->finishLoopClosure();
@@ -237,7 +238,6 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool relocate, Pip
     records.extrinsic_checks = workers.lidar->extrinsicVerdicts();
   }
   if (workers.visual) {
-    records.visual = workers.visual->takeFrames();
     const visual::VisualSlam& slam = workers.visual->slam();
     placeOnFinalKeyframes(slam.retiredMaps(), slam.map(), records.visual);
     if (relocate) relocateInFinalMaps(slam, records.visual);

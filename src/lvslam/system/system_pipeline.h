@@ -17,6 +17,7 @@
 #include "lvslam/io/sensor_source.h"
 #include "lvslam/loop/loop_closure.h"
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/record_file.h"
 #include "lvslam/system/online/online_output.h"
 #include "lvslam/system/system_config.h"
 
@@ -34,9 +35,10 @@ struct PipelineRecords {
   // When the last online pose was out (the run's online part ends here;
   // the loop closure's last solve and the refinement come after).
   std::chrono::steady_clock::time_point online_end;
-  std::vector<VisualFrameRecord> visual;  // one per camera frame (visual and fused modes)
-  std::vector<LidarFrameRecord> lidar;    // one per camera frame (lidar and fused modes)
-  std::vector<ScanRecord> scans;
+  // On disk (record_file.h): read them in order, each read is a copy.
+  RecordFile<VisualFrameRecord> visual;  // one per camera frame (visual and fused modes)
+  RecordFile<LidarFrameRecord> lidar;    // one per camera frame (lidar and fused modes)
+  RecordFile<ScanRecord> scans;
   Trajectory T_odom_lidar_scans;          // at scan times
   std::vector<PlyPoint> lidar_map;        // odometry world frame
   // Loop closure over the LiDAR keyframes (loop.enabled, lidar and fused
@@ -49,10 +51,10 @@ struct PipelineRecords {
   // The online output, one per camera frame, each made when its data were in
   // (online/online_output.h), with the detection module's switches and where
   // each visual map sat in the output world.
-  std::vector<FrameOutput> online;
+  RecordFile<FrameOutput> online;
   // The LiDAR records in the order the online output took them (with the
   // visual records, what rebuilds its graph for the offline refinement).
-  std::vector<LidarInputEvent> lidar_inputs;
+  RecordFile<LidarInputEvent> lidar_inputs;
   std::vector<SwitchEvent> switches;
   std::map<int, Eigen::Isometry3d> T_world_map;
   std::size_t images = 0, scans_read = 0;  // as read from the source

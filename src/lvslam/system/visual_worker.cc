@@ -18,10 +18,10 @@ const PinholeCamera& requireCamera(const Calibration& calibration) {
 
 // The camera's motion from the previous frame to this one, when both were
 // tracked in the same map: it deskews the LiDAR points of the depth hints.
-std::optional<CameraMotion> motionFromPrevious(const std::vector<VisualFrameRecord>& previous,
+std::optional<CameraMotion> motionFromPrevious(const std::optional<VisualFrameRecord>& previous,
                                                const visual::VisualFrameResult& now) {
-  if (previous.empty() || !now.pose_valid) return std::nullopt;
-  const visual::VisualFrameResult& before = previous.back().result;
+  if (!previous || !now.pose_valid) return std::nullopt;
+  const visual::VisualFrameResult& before = previous->result;
   if (!before.pose_valid || before.map_id != now.map_id) return std::nullopt;
   return CameraMotion{before.timestamp, now.T_world_camera.inverse() * before.T_world_camera};
 }
@@ -82,7 +82,7 @@ std::vector<Eigen::Vector2d> VisualWorker::track(visual::ExtractedImage image, d
     // Without that motion only the points measured close to the image time
     // are safe.
     const Stopwatch depth_watch;
-    const std::optional<CameraMotion> motion = motionFromPrevious(frames_, record.result);
+    const std::optional<CameraMotion> motion = motionFromPrevious(last_, record.result);
     const double max_dt = motion ? keypoint_depth_max_dt_ : hint_max_dt_;
     const PinholeCamera& camera = *calibration_.camera;
     const std::vector<double> depths =
@@ -95,7 +95,8 @@ std::vector<Eigen::Vector2d> VisualWorker::track(visual::ExtractedImage image, d
   // A frame's inliers (about 7 kB) are kept for the whole run only when the
   // refinement will optimise the frame again on them.
   if (!keep_replay_observations_) record.result.replay.observations = {};
-  frames_.push_back(std::move(record));
+  if (last_) frames_.push_back(*last_);
+  last_ = std::move(record);
   // Fused mode with depths from features: the fusion framework answers.
   if (!depths_from_scans_ && use_keypoint_depths_ && slam_.currentIsKeyframe()) return slam_.keypointPixels();
   return {};
@@ -109,7 +110,7 @@ std::vector<fusion::ImageSegment> fusionSegments(const visual::ExtractedImage& i
 }
 
 void VisualWorker::applyFusion(const FusionAnswer& answer) {
-  if (frames_.empty() || !frames_.back().result.pose_valid) return;
+  if (!last_ || !last_->result.pose_valid) return;
   const Stopwatch watch;
   if (!answer.keypoint_depths.empty()) slam_.setKeypointDepths(answer.keypoint_depths);
   for (const StampedPose& pose : answer.lidar_camera_poses) slam_.addLidarPose(pose.t, pose.T_world_frame);
@@ -117,8 +118,14 @@ void VisualWorker::applyFusion(const FusionAnswer& answer) {
   if (use_fusion_lines_)
     for (const fusion::FusionLine& line : answer.result.lines)
       added += slam_.addFusionLine(static_cast<int>(line.segment_index), line.A, line.B, line.direction) >= 0 ? 1 : 0;
-  frames_.back().fusion_lines_added = added;
-  frames_.back().fusion_apply_ms = watch.ms();
+  last_->fusion_lines_added = added;
+  last_->fusion_apply_ms = watch.ms();
+}
+
+RecordFile<VisualFrameRecord> VisualWorker::takeFrames() {
+  if (last_) frames_.push_back(*last_);
+  last_.reset();
+  return std::move(frames_);
 }
 
 }  // namespace lvslam::system

@@ -11,6 +11,7 @@
 #include "lvslam/core/lidar_scan.h"
 #include "lvslam/fusion/fusion_framework.h"
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/record_file.h"
 #include "lvslam/system/system_config.h"
 #include "lvslam/visual/visual_slam.h"
 
@@ -34,13 +35,11 @@ class VisualWorker {
   // The fusion framework's answer for the frame just tracked.
   void applyFusion(const FusionAnswer& answer);
 
-  // The records of every frame, handed over once the run has ended (each
-  // keeps its tracked observations, so they are moved, not copied).
-  std::vector<VisualFrameRecord> takeFrames() { return std::move(frames_); }
+  // The records of every frame, handed over once the run has ended.
+  RecordFile<VisualFrameRecord> takeFrames();
   // The record of the frame just tracked, and how many frames so far.
-  const VisualFrameRecord& lastFrame() const { return frames_.back(); }
-  const std::vector<VisualFrameRecord>& frames() const { return frames_; }
-  std::size_t frameCount() const { return frames_.size(); }
+  const VisualFrameRecord& lastFrame() const { return *last_; }
+  std::size_t frameCount() const { return frames_.size() + (last_ ? 1 : 0); }
   const visual::VisualSlam& slam() const { return slam_; }
 
  private:
@@ -55,7 +54,10 @@ class VisualWorker {
   bool keep_replay_observations_;  // the refinement relocates frames in their final maps
   visual::VisualSlam slam_;
   std::vector<std::shared_ptr<const LidarScan>> recent_scans_;
-  std::vector<VisualFrameRecord> frames_;
+  // Every frame's record on disk but the last, which the fusion answer
+  // still completes.
+  RecordFile<VisualFrameRecord> frames_;
+  std::optional<VisualFrameRecord> last_;
 };
 
 }  // namespace lvslam::system

@@ -40,10 +40,12 @@ Trajectory replayWithFinalPoses(const PipelineRecords& records, const SystemConf
                                 const Eigen::Isometry3d& T_camera_lidar) {
   const std::unique_ptr<OnlineOutput> output = makeOnlineOutput(config, T_camera_lidar, true);
   Trajectory refined;
-  for (std::size_t j = 0; j < records.visual.size(); ++j) {
-    const LidarFrameRecord* lidar = j < records.lidar.size() ? &records.lidar[j] : nullptr;
-    const FrameOutput frame = output->add(&records.visual[j], lidar);
+  auto lidar = records.lidar.begin();
+  for (const VisualFrameRecord& visual : records.visual) {
+    const LidarFrameRecord* l = lidar != records.lidar.end() ? &*lidar : nullptr;
+    const FrameOutput frame = output->add(&visual, l);
     if (frame.T_world_camera) refined.push_back({frame.t, *frame.T_world_camera});
+    if (l) ++lidar;
   }
   return refined;
 }

@@ -2,11 +2,15 @@
 
 namespace lvslam::system {
 
-void replayLidarInputs(OnlineOutput& output, const std::vector<VisualFrameRecord>& visual,
-                       const std::vector<LidarInputEvent>& inputs) {
+void replayLidarInputs(OnlineOutput& output, const RecordFile<VisualFrameRecord>& visual,
+                       const RecordFile<LidarInputEvent>& inputs) {
   for (const LidarInputEvent& input : inputs) {
-    if (input.improvement) output.lidarImproved(input.index, input.record);
-    else if (input.index < visual.size()) output.add(&visual[input.index], &input.record);
+    if (input.improvement) {
+      output.lidarImproved(input.index, input.record);
+    } else if (input.index < visual.size()) {
+      const VisualFrameRecord record = visual[input.index];
+      output.add(&record, &input.record);
+    }
   }
 }
 
@@ -15,7 +19,6 @@ OnlineStage::OnlineStage(std::unique_ptr<OnlineOutput> output, bool has_visual, 
 
 void OnlineStage::frameArrived(std::size_t index, std::chrono::steady_clock::time_point when) {
   const std::lock_guard lock(mutex_);
-  if (arrivals_.size() <= index) arrivals_.resize(index + 1);
   arrivals_[index] = when;
 }
 
@@ -37,15 +40,18 @@ void OnlineStage::emit(const VisualFrameRecord* visual, const LidarFrameRecord* 
   FrameOutput frame = output_->add(visual, lidar);
   const std::size_t index = frames_.size();
   if (lidar) {
-    lidar_inputs_.push_back({index, false, *lidar});
-    lidar_inputs_.back().record.fusion_lines.clear();
+    LidarInputEvent input{index, false, *lidar};
+    input.record.fusion_lines.clear();
+    lidar_inputs_.push_back(input);
   }
-  if (index < arrivals_.size())
+  if (const auto arrival = arrivals_.find(index); arrival != arrivals_.end()) {
     frame.latency_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - arrivals_[index]).count();
-  frames_.push_back(std::move(frame));
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - arrival->second).count();
+    arrivals_.erase(arrival);
+  }
+  frames_.push_back(frame);
   visual_.erase(index);
-  if (listener_) listener_(frames_.back());
+  if (listener_) listener_(frame);
 }
 
 void OnlineStage::runReady() {
@@ -71,7 +77,7 @@ void OnlineStage::runReady() {
   }
 }
 
-void OnlineStage::finish(const std::vector<VisualFrameRecord>& visual, const std::vector<LidarFrameRecord>& lidar) {
+void OnlineStage::finish(const RecordFile<VisualFrameRecord>& visual, const RecordFile<LidarFrameRecord>& lidar) {
   const std::lock_guard lock(mutex_);
   const std::size_t count = has_visual_ ? visual.size() : lidar.size();
   for (std::size_t i = frames_.size(); i < count && i < visual.size(); ++i) visual_.try_emplace(i, visual[i]);
@@ -82,17 +88,18 @@ void OnlineStage::finish(const std::vector<VisualFrameRecord>& visual, const std
     const auto v = visual_.find(next);
     const bool has_lidar_record = next < lidar.size();
     if ((has_visual_ && v == visual_.end()) || (has_lidar_ && !has_lidar_record)) return;
-    emit(has_visual_ ? &v->second : nullptr, has_lidar_ ? &lidar[next] : nullptr);
+    const std::optional<LidarFrameRecord> l = has_lidar_ ? std::optional(lidar[next]) : std::nullopt;
+    emit(has_visual_ ? &v->second : nullptr, l ? &*l : nullptr);
     runReady();
   }
 }
 
-std::vector<FrameOutput> OnlineStage::takeFrames() {
+RecordFile<FrameOutput> OnlineStage::takeFrames() {
   const std::lock_guard lock(mutex_);
   return std::move(frames_);
 }
 
-std::vector<LidarInputEvent> OnlineStage::takeLidarInputs() {
+RecordFile<LidarInputEvent> OnlineStage::takeLidarInputs() {
   const std::lock_guard lock(mutex_);
   return std::move(lidar_inputs_);
 }

@@ -18,14 +18,15 @@
 #include <vector>
 
 #include "lvslam/system/online/online_output.h"
+#include "lvslam/system/record_file.h"
 
 namespace lvslam::system {
 
 // Gives `output` the calls the stage made, again: each frame's visual
 // record with its first LiDAR record, and the improvements between, in
 // the order of `inputs` (OnlineStage::takeLidarInputs).
-void replayLidarInputs(OnlineOutput& output, const std::vector<VisualFrameRecord>& visual,
-                       const std::vector<LidarInputEvent>& inputs);
+void replayLidarInputs(OnlineOutput& output, const RecordFile<VisualFrameRecord>& visual,
+                       const RecordFile<LidarInputEvent>& inputs);
 
 class OnlineStage {
  public:
@@ -40,12 +41,12 @@ class OnlineStage {
   void lidarReady(std::size_t index, const LidarFrameRecord& record);
   // After the run: frames a half never came for (a LiDAR pose that never
   // became known) are completed with the workers' final records.
-  void finish(const std::vector<VisualFrameRecord>& visual, const std::vector<LidarFrameRecord>& lidar);
+  void finish(const RecordFile<VisualFrameRecord>& visual, const RecordFile<LidarFrameRecord>& lidar);
 
-  std::vector<FrameOutput> takeFrames();
+  RecordFile<FrameOutput> takeFrames();
   // Every LiDAR record the output took, in the order it took them: replayed
   // in that order with the visual records, they rebuild the online graph.
-  std::vector<LidarInputEvent> takeLidarInputs();
+  RecordFile<LidarInputEvent> takeLidarInputs();
   // Called with each frame's output as it is made, in frame order (from
   // whichever thread completed the frame, under the stage's lock).
   void onFrameOutput(std::function<void(const FrameOutput&)> listener) { listener_ = std::move(listener); }
@@ -60,9 +61,9 @@ class OnlineStage {
   std::mutex mutex_;
   std::map<std::size_t, VisualFrameRecord> visual_;  // ready, not yet out
   std::deque<LidarInputEvent> lidar_events_;        // in the LiDAR thread's order
-  std::vector<LidarInputEvent> lidar_inputs_;       // as the output took them
-  std::vector<std::chrono::steady_clock::time_point> arrivals_;
-  std::vector<FrameOutput> frames_;
+  RecordFile<LidarInputEvent> lidar_inputs_;        // as the output took them
+  std::map<std::size_t, std::chrono::steady_clock::time_point> arrivals_;  // of the frames not yet out
+  RecordFile<FrameOutput> frames_;
   std::function<void(const FrameOutput&)> listener_;
 };
 
