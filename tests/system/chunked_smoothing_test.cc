@@ -8,6 +8,7 @@
 
 #include "lvslam/core/error.h"
 #include "lvslam/system/online/pose_information.h"
+#include "support/record_files.h"
 
 namespace lvslam::system {
 namespace {
@@ -80,7 +81,7 @@ TEST(ChunkedSmoothing, ALongDriveSmoothedInChunksIsTheWholeGraphsSolution) {
   ASSERT_TRUE(solvePoseGraph(whole, drive.factors, config.solve));
   double correction = 0.0, difference = 0.0;
   std::vector<PoseNode> chunked = drive.nodes;
-  smoothInChunks(chunked, drive.factors, config);
+  smoothInChunks(chunked, testing::recordFileOf(drive.factors), config);
   for (std::size_t i = 0; i < whole.size(); ++i) {
     const Eigen::Vector3d t = whole[i].T_world_camera.translation();
     correction = std::max(correction, (t - drive.nodes[i].T_world_camera.translation()).norm());
@@ -98,7 +99,7 @@ TEST(ChunkedSmoothing, AGraphWithinOneChunkIsSolvedWhole) {
   std::vector<PoseNode> whole = drive.nodes, chunked = drive.nodes;
   const ChunkedSmoothingConfig config = smallChunks(2);
   ASSERT_TRUE(solvePoseGraph(whole, drive.factors, config.solve));
-  smoothInChunks(chunked, drive.factors, config);
+  smoothInChunks(chunked, testing::recordFileOf(drive.factors), config);
   for (std::size_t i = 0; i < whole.size(); ++i)
     EXPECT_TRUE(whole[i].T_world_camera.matrix() == chunked[i].T_world_camera.matrix()) << i;
 }
@@ -107,9 +108,9 @@ TEST(ChunkedSmoothing, ChunksMustBeLargerThanTheirOverlap) {
   Drive drive = makeDrive(10);
   ChunkedSmoothingConfig config = smallChunks(2);
   config.overlap_nodes = config.chunk_nodes;
-  EXPECT_THROW(smoothInChunks(drive.nodes, drive.factors, config), Error);
+  EXPECT_THROW(smoothInChunks(drive.nodes, testing::recordFileOf(drive.factors), config), Error);
   config = smallChunks(0);
-  EXPECT_THROW(smoothInChunks(drive.nodes, drive.factors, config), Error);
+  EXPECT_THROW(smoothInChunks(drive.nodes, testing::recordFileOf(drive.factors), config), Error);
 }
 
 }  // namespace

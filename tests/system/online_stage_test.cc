@@ -64,10 +64,10 @@ TEST(OnlineStage, ALateVisualRecordHoldsTheLidarsLaterRecordsSoTheOutputSeesTheO
   EXPECT_EQ(callsFor(vision_late), expected);
 }
 
-// The offline refinement rebuilds the online graph from the LiDAR inputs
-// the stage kept: replayed in their order with the visual records, they
-// make exactly the calls the online output saw, improvements included.
-TEST(OnlineStage, ItsLidarInputsReplayedMakeTheOnlineCallsAgain) {
+// Improvements reach the output in the LiDAR thread's order, between the
+// frames they came between; at the end the workers' records complete what
+// is left.
+TEST(OnlineStage, ImprovementsKeepTheLidarsOrderAndTheEndCompletesTheRest) {
   std::vector<std::string> online;
   OnlineStage stage(std::make_unique<RecordingOutput>(online), true, true);
   for (const Event& e : std::vector<Event>{{false, 0, 1}, {false, 1, 1}, {true, 0, 0}, {false, 0, 2},
@@ -77,12 +77,8 @@ TEST(OnlineStage, ItsLidarInputsReplayedMakeTheOnlineCallsAgain) {
   }
   const RecordFile<VisualFrameRecord> visual = testing::recordFileOf(std::vector<VisualFrameRecord>(4));
   stage.finish(visual, testing::recordFileOf(std::vector{lidarTagged(2), lidarTagged(2), lidarTagged(1), lidarTagged(9)}));
-  ASSERT_EQ(online, (std::vector<std::string>{"add 0 v l1", "add 1 v l1", "improve 0 l2", "improve 1 l2",
+  EXPECT_EQ(online, (std::vector<std::string>{"add 0 v l1", "add 1 v l1", "improve 0 l2", "improve 1 l2",
                                               "add 2 v l1", "add 3 v l9"}));
-  std::vector<std::string> replayed;
-  RecordingOutput replay(replayed);
-  replayLidarInputs(replay, visual, stage.takeLidarInputs());
-  EXPECT_EQ(replayed, online);
 }
 
 TEST(OnlineStage, AFrameTheLidarNeverPosedTakesTheWorkersFinalRecordAtTheEnd) {

@@ -1,4 +1,5 @@
 #include "lvslam/system/record_file.h"
+#include "lvslam/system/record_fields.h"
 
 #include <cstdlib>
 #include <string>
@@ -121,24 +122,22 @@ TEST(RecordFile, LidarScanAndOutputRecordsComeBackFieldByField) {
   l.fusion_lines = {{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 5, 6)}};
   l.lidar_features = 18, l.lidar_points_refined = 19, l.keypoint_depths = 20;
   l.fusion_ms = 5.5;
-  RecordFile<LidarInputEvent> inputs;
-  inputs.push_back({21, true, l});
-  const LidarInputEvent e = inputs[0];
-  EXPECT_EQ(e.index, 21u);
-  EXPECT_TRUE(e.improvement);
-  EXPECT_EQ(e.record.t, 2.0);
-  ASSERT_TRUE(e.record.T_odom_lidar);
-  EXPECT_TRUE(same(*e.record.T_odom_lidar, pose(2.0)));
-  EXPECT_TRUE(e.record.pose_reliable);
-  EXPECT_EQ(e.record.information, matrix(-3.0));
-  EXPECT_TRUE(e.record.degenerate);
-  EXPECT_EQ(e.record.registration, 17u);
-  ASSERT_EQ(e.record.fusion_lines.size(), 1u);
-  EXPECT_EQ(e.record.fusion_lines[0].B, Eigen::Vector3d(4, 5, 6));
-  EXPECT_EQ(e.record.lidar_features, 18u);
-  EXPECT_EQ(e.record.lidar_points_refined, 19u);
-  EXPECT_EQ(e.record.keypoint_depths, 20u);
-  EXPECT_EQ(e.record.fusion_ms, 5.5);
+  RecordFile<LidarFrameRecord> lidar;
+  lidar.push_back(l);
+  const LidarFrameRecord r = lidar[0];
+  EXPECT_EQ(r.t, 2.0);
+  ASSERT_TRUE(r.T_odom_lidar);
+  EXPECT_TRUE(same(*r.T_odom_lidar, pose(2.0)));
+  EXPECT_TRUE(r.pose_reliable);
+  EXPECT_EQ(r.information, matrix(-3.0));
+  EXPECT_TRUE(r.degenerate);
+  EXPECT_EQ(r.registration, 17u);
+  ASSERT_EQ(r.fusion_lines.size(), 1u);
+  EXPECT_EQ(r.fusion_lines[0].B, Eigen::Vector3d(4, 5, 6));
+  EXPECT_EQ(r.lidar_features, 18u);
+  EXPECT_EQ(r.lidar_points_refined, 19u);
+  EXPECT_EQ(r.keypoint_depths, 20u);
+  EXPECT_EQ(r.fusion_ms, 5.5);
 
   ScanRecord s;
   s.t = 3.0;

@@ -1,32 +1,52 @@
 #include "lvslam/system/offline/refinement.h"
 
+#include <memory>
+
 #include <gtest/gtest.h>
+
+#include "lvslam/system/online/online_output.h"
 
 namespace lvslam::system {
 namespace {
 
-// The LiDAR lost from its second sweep on: after the run no frame has a
-// pose both sweeps around it stood behind, so the replayed estimator never
-// has a world. The refined trajectory must not come out empty.
-TEST(Refinement, FusedFramesTheReplayCannotPoseKeepTheirOnlinePose) {
+// The online output over the frames, as the pipeline runs it, and the
+// records the refinement reads after the run (the estimator's graph among them).
+PipelineRecords recordsOf(const std::vector<VisualFrameRecord>& visual, const std::vector<LidarFrameRecord>& lidar,
+                          const SystemConfig& config) {
   PipelineRecords records;
+  const std::unique_ptr<OnlineOutput> output = makeOnlineOutput(config, Eigen::Isometry3d::Identity());
+  for (std::size_t j = 0; j < visual.size(); ++j) {
+    records.online.push_back(output->add(&visual[j], &lidar[j]));
+    records.visual.push_back(visual[j]);
+    records.lidar.push_back(lidar[j]);
+  }
+  records.estimator_graph = output->takeGraph();
+  return records;
+}
+
+// The LiDAR lost from its second sweep on: no frame has a pose both sweeps
+// around it stood behind, so the estimator never has a world and its graph
+// is empty. The refined trajectory must not come out empty.
+TEST(Refinement, FusedFramesTheGraphDoesNotHoldKeepTheirOnlinePose) {
+  std::vector<VisualFrameRecord> visual_frames;
+  std::vector<LidarFrameRecord> lidar_frames;
   Trajectory online;
   for (int j = 0; j < 3; ++j) {
     VisualFrameRecord visual;
     visual.t = 0.1 * j;
-    records.visual.push_back(visual);
+    visual_frames.push_back(visual);
     LidarFrameRecord lidar;
     lidar.t = visual.t;
     lidar.T_odom_lidar = Eigen::Isometry3d::Identity();
     lidar.pose_reliable = false;  // between a registered and a lost sweep
-    records.lidar.push_back(lidar);
-    records.lidar_inputs.push_back({static_cast<std::size_t>(j), false, lidar});
+    lidar_frames.push_back(lidar);
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
     T.translation().x() = 0.5 * j;
     online.push_back({visual.t, T});
   }
   SystemConfig config;
   config.mode = RunMode::kFused;
+  const PipelineRecords records = recordsOf(visual_frames, lidar_frames, config);
   const Trajectory refined = refineTrajectory(records, config, Eigen::Isometry3d::Identity(), online).trajectory;
   ASSERT_EQ(refined.size(), online.size());
   for (std::size_t j = 0; j < online.size(); ++j) {
@@ -36,12 +56,13 @@ TEST(Refinement, FusedFramesTheReplayCannotPoseKeepTheirOnlinePose) {
 }
 
 
-// The fused refinement replays the estimator on vision as tracked: a visual
-// map bent after its frames were tracked (its final keyframes place the
-// frames 2 cm further sideways per frame, 0.58 m at the end) moves no
-// refined pose.
+// The fused refinement smooths the estimator's graph of vision as tracked:
+// a visual map bent after its frames were tracked (its final keyframes
+// place the frames 2 cm further sideways per frame, 0.58 m at the end)
+// moves no refined pose.
 TEST(Refinement, FusedRefinementTakesVisionAsTracked) {
-  PipelineRecords records;
+  std::vector<VisualFrameRecord> visual_frames;
+  std::vector<LidarFrameRecord> lidar_frames;
   Trajectory online;
   Vector6d information;
   information << Eigen::Vector3d::Constant(1e4), Eigen::Vector3d::Constant(1e6);
@@ -62,18 +83,20 @@ TEST(Refinement, FusedRefinementTakesVisionAsTracked) {
     Eigen::Isometry3d T_final = T;
     T_final.translation().y() += 0.02 * j;
     visual.T_world_camera_final = T_final;
-    records.visual.push_back(visual);
+    visual_frames.push_back(visual);
     LidarFrameRecord lidar;
     lidar.t = visual.t;
     lidar.T_odom_lidar = T;
     lidar.pose_reliable = true;
     lidar.information = information.asDiagonal();
-    records.lidar.push_back(lidar);
-    records.lidar_inputs.push_back({static_cast<std::size_t>(j), false, lidar});
+    lidar_frames.push_back(lidar);
     online.push_back({visual.t, T});
   }
   SystemConfig config;
   config.mode = RunMode::kFused;
+  const PipelineRecords records = recordsOf(visual_frames, lidar_frames, config);
+  ASSERT_TRUE(records.estimator_graph);
+  ASSERT_EQ(records.estimator_graph->camera_nodes.size(), online.size());
   const Trajectory refined = refineTrajectory(records, config, Eigen::Isometry3d::Identity(), online).trajectory;
   ASSERT_EQ(refined.size(), online.size());
   for (std::size_t j = 0; j < online.size(); ++j)

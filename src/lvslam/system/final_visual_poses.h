@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/record_fields.h"
 #include "lvslam/system/record_file.h"
 #include "lvslam/visual/data/visual_map.h"
 #include "lvslam/visual/visual_slam.h"

@@ -19,6 +19,7 @@
 #include "lvslam/fusion/fusion_step.h"
 #include "lvslam/lidar/lidar_odometry.h"
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/record_fields.h"
 #include "lvslam/system/record_file.h"
 #include "lvslam/system/lidar_map_export.h"
 #include "lvslam/system/offline/loop_closure_worker.h"

@@ -11,7 +11,7 @@ namespace lvslam::system {
 // A record that grows a field fails here until the field is listed below
 // (and the size updated): a field left out would come back as its default.
 static_assert(sizeof(visual::VisualFrameResult) == 1168 && sizeof(VisualFrameRecord) == 1520 &&
-                  sizeof(LidarFrameRecord) == 544 && sizeof(LidarInputEvent) == 560 && sizeof(FrameOutput) == 576 &&
+                  sizeof(LidarFrameRecord) == 544 && sizeof(FrameOutput) == 576 &&
                   sizeof(ScanRecord) == 128 && sizeof(GateEvent) == 64,
               "a per-frame record changed: list its fields in record_fields.h");
 
@@ -72,11 +72,6 @@ template <typename A>
 void fields(A& a, LidarFrameRecord& l) {
   a(l.t), a(l.T_odom_lidar), a(l.pose_reliable), a(l.information), a(l.degenerate), a(l.registration),
       a(l.fusion_lines), a(l.lidar_features), a(l.lidar_points_refined), a(l.keypoint_depths), a(l.fusion_ms);
-}
-
-template <typename A>
-void fields(A& a, LidarInputEvent& e) {
-  a(e.index), a(e.improvement), a(e.record);
 }
 
 template <typename A>

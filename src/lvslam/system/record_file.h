@@ -6,7 +6,9 @@
 // record is encoded field by field (record_fields.h) and appended to an
 // anonymous file in the temporary directory, which vanishes with its last
 // handle, also when the process dies. What stays in memory is 8 bytes a
-// record (where it starts). One thread at a time may use a file.
+// record (where it starts). One thread at a time may use a file. A record
+// type's fields come from a `fields(archive, record)` that argument lookup
+// finds where the file is used (record_fields.h lists the pipeline's).
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -21,7 +23,6 @@
 #include <Eigen/Geometry>
 
 #include "lvslam/core/error.h"
-#include "lvslam/system/record_fields.h"
 
 namespace lvslam::system {
 

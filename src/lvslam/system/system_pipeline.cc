@@ -227,7 +227,7 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool relocate, Pip
   stage.finish(records.visual, records.lidar);
   records.online_end = std::chrono::steady_clock::now();
   records.online = stage.takeFrames();
-  records.lidar_inputs = stage.takeLidarInputs();
+  records.estimator_graph = stage.takeGraph();
   records.switches = stage.output().switches();
   records.T_world_map = stage.output().mapPlacements();
   if (workers.lidar) {

@@ -17,6 +17,7 @@
 #include "lvslam/io/sensor_source.h"
 #include "lvslam/loop/loop_closure.h"
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/record_fields.h"
 #include "lvslam/system/record_file.h"
 #include "lvslam/system/online/online_output.h"
 #include "lvslam/system/system_config.h"
@@ -52,9 +53,9 @@ struct PipelineRecords {
   // (online/online_output.h), with the detection module's switches and where
   // each visual map sat in the output world.
   RecordFile<FrameOutput> online;
-  // The LiDAR records in the order the online output took them (with the
-  // visual records, what rebuilds its graph for the offline refinement).
-  RecordFile<LidarInputEvent> lidar_inputs;
+  // Fused mode: the online estimator's graph over the whole run, for the
+  // offline refinement.
+  std::optional<EstimatorGraph> estimator_graph;
   std::vector<SwitchEvent> switches;
   std::map<int, Eigen::Isometry3d> T_world_map;
   std::size_t images = 0, scans_read = 0;  // as read from the source

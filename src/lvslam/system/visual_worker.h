@@ -11,6 +11,7 @@
 #include "lvslam/core/lidar_scan.h"
 #include "lvslam/fusion/fusion_framework.h"
 #include "lvslam/system/frame_records.h"
+#include "lvslam/system/record_fields.h"
 #include "lvslam/system/record_file.h"
 #include "lvslam/system/system_config.h"
 #include "lvslam/visual/visual_slam.h"

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lvslam/system/online/pose_graph.h"
+#include "lvslam/system/record_file.h"
 
 namespace lvslam::system {
 
@@ -22,9 +23,10 @@ struct ChunkedSmoothingConfig {
   PoseGraphSolveConfig solve{3.0, 50, true};
 };
 
-// Optimises the free nodes in place. A graph of at most chunk_nodes nodes
-// is solved whole, as solvePoseGraph does.
-void smoothInChunks(std::vector<PoseNode>& nodes, const std::vector<PoseFactor>& factors,
+// Optimises the free nodes in place; the factors are read from disk a
+// chunk at a time (record_file.h). A graph of at most chunk_nodes nodes is
+// solved whole, as solvePoseGraph does.
+void smoothInChunks(std::vector<PoseNode>& nodes, const RecordFile<PoseFactor>& factors,
                     const ChunkedSmoothingConfig& config);
 
 }  // namespace lvslam::system

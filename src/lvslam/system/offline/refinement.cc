@@ -3,35 +3,27 @@
 #include "lvslam/system/offline/chunked_smoothing.h"
 #include "lvslam/system/offline/loop_correction.h"
 #include "lvslam/system/offline/loop_on_fused.h"
-#include "lvslam/system/online/online_stage.h"
 
 namespace lvslam::system {
 
 namespace {
 
-// The online estimator again, over the whole run, on the records it took
-// in the order it took them (each frame's first LiDAR pose, then the
-// better one interpolated between the sweeps around it): the online graph,
-// kept whole. Then smoothed with every node free but the first (the world),
-// chunk by chunk (chunked_smoothing.h). Replayed on the interpolated poses
-// alone, its gate would read the LiDAR's noise from steps the
-// interpolation smoothed. Vision enters as tracked: its poses placed on the
-// map's final keyframes gain nothing here (the estimator already weighs the
-// map's drift) and lose where the final map is worse than the tracking was
-// (docs/benchmarks.md, "Offline refinement").
-Trajectory smoothFusedGraph(const PipelineRecords& records, const SystemConfig& config,
-                            const Eigen::Isometry3d& T_camera_lidar) {
-  SystemConfig whole_run = config;
-  whole_run.estimator.history_s = -1.0;  // the replay keeps the whole graph
-  const std::unique_ptr<OnlineOutput> replay = makeOnlineOutput(whole_run, T_camera_lidar);
-  replayLidarInputs(*replay, records.visual, records.lidar_inputs);
-  const FusedEstimator& estimator = *replay->estimator();
-  std::vector<PoseNode> nodes = estimator.nodes();
-  smoothInChunks(nodes, estimator.factors(), ChunkedSmoothingConfig{});
+// The online estimator's graph over the whole run (each frame's LiDAR pose
+// as the estimator last had it: interpolated between the sweeps around it;
+// vision as tracked), smoothed with every node free but the first (the
+// world), chunk by chunk (chunked_smoothing.h). Vision enters as tracked:
+// its poses placed on the map's final keyframes gain nothing here (the
+// estimator already weighs the map's drift) and lose where the final map
+// is worse than the tracking was (docs/benchmarks.md, "Offline refinement").
+Trajectory smoothFusedGraph(const PipelineRecords& records) {
+  if (!records.estimator_graph) return {};
+  const EstimatorGraph& graph = *records.estimator_graph;
+  std::vector<PoseNode> nodes = graph.nodes;
+  smoothInChunks(nodes, graph.factors, ChunkedSmoothingConfig{});
   Trajectory refined;
-  for (const int node : estimator.cameraNodes()) {
+  for (const int node : graph.camera_nodes) {
     const auto i = static_cast<std::size_t>(node);
-    refined.push_back({estimator.nodeTimes()[i], nodes[i].T_world_camera});
+    refined.push_back({graph.times[i], nodes[i].T_world_camera});
   }
   return refined;
 }
@@ -82,7 +74,7 @@ Trajectory refineWithoutLoops(const PipelineRecords& records, const SystemConfig
                               const Eigen::Isometry3d& T_camera_lidar, const Trajectory& online) {
   if (config.mode == RunMode::kLidar) return records.lidar.empty() ? online : lidarAtFrames(records, T_camera_lidar);
   if (config.mode == RunMode::kFused && !config.paper_output)
-    return withOnlineWhereUnrefined(smoothFusedGraph(records, config, T_camera_lidar), online);
+    return withOnlineWhereUnrefined(smoothFusedGraph(records), online);
   if (!config.final_map_poses) return online;
   return replayWithFinalPoses(records, config, T_camera_lidar);
 }

@@ -1,11 +1,11 @@
 #pragma once
 // Offline refinement: what needs the whole run, written apart from the
 // online output (trajectory_refined.tum). Fused mode: the online
-// estimator run again on the records as they stand after the run (each
-// LiDAR pose interpolated between the sweeps around it, vision as
-// tracked), its graph smoothed over the whole run (every frame free, every
-// accepted factor, the first pose held; solved in overlapping chunks so
-// that the solver's memory does not grow with the run). Visual mode and the paper's output:
+// estimator's graph over the whole run (kept on disk as the estimator let
+// it go; each LiDAR pose as interpolated between the sweeps around it,
+// vision as tracked) smoothed (every frame free, every accepted factor, the
+// first pose held; solved in overlapping chunks so that the solver's memory
+// does not grow with the run). Visual mode and the paper's output:
 // the same per-frame output fed with each visual pose placed on its
 // keyframe as the keyframe stands at the end (final_visual_poses.h, as
 // ORB-SLAM's SaveTrajectoryTUM). LiDAR mode: each frame interpolated

@@ -90,6 +90,14 @@ void FusedEstimator::forget(double t_newest) {
   int keep_factor = first_factor_ + static_cast<int>(factors_.size());
   for (int id = keep; id < first_node_ + static_cast<int>(nodes_.size()); ++id)
     for (const int f : factorsTo(id)) keep_factor = std::min(keep_factor, f);
+  const auto first_camera = std::lower_bound(camera_nodes_.begin(), camera_nodes_.end(), keep);
+  auto camera = camera_nodes_.begin();
+  for (int id = first_node_; id < keep; ++id) {
+    const bool is_camera = camera != first_camera && *camera == id;
+    if (is_camera) ++camera;
+    retired_nodes_.push_back({timeOf(id), nodeAt(id), is_camera});
+  }
+  for (int id = first_factor_; id < keep_factor; ++id) retired_factors_.push_back(factorAt(id));
   const auto drop = [](auto& items, int count) { items.erase(items.begin(), items.begin() + count); };
   drop(times_, keep - first_node_);
   drop(nodes_, keep - first_node_);
@@ -97,7 +105,6 @@ void FusedEstimator::forget(double t_newest) {
   drop(factors_, keep_factor - first_factor_);
   first_node_ = keep;
   first_factor_ = keep_factor;
-  const auto first_camera = std::lower_bound(camera_nodes_.begin(), camera_nodes_.end(), keep);
   camera_nodes_.erase(camera_nodes_.begin(), first_camera);
 }
 
@@ -109,14 +116,21 @@ double FusedEstimator::chiSquare(const PoseFactor& factor) const {
   return factorChiSquare(between, ends);
 }
 
-const std::vector<PoseNode>& FusedEstimator::nodes() const {
-  if (first_node_ != 0) throw Error("FusedEstimator", "nodes(): the history was not kept (history_s >= 0)");
-  return nodes_;
-}
-
-const std::vector<PoseFactor>& FusedEstimator::factors() const {
-  if (first_factor_ != 0) throw Error("FusedEstimator", "factors(): the history was not kept (history_s >= 0)");
-  return factors_;
+EstimatorGraph FusedEstimator::takeGraph() {
+  EstimatorGraph graph;
+  for (const RetiredNode& retired : retired_nodes_) {
+    if (retired.camera) graph.camera_nodes.push_back(static_cast<int>(graph.nodes.size()));
+    graph.times.push_back(retired.t);
+    graph.nodes.push_back(retired.node);
+  }
+  graph.times.insert(graph.times.end(), times_.begin(), times_.end());
+  graph.nodes.insert(graph.nodes.end(), nodes_.begin(), nodes_.end());
+  graph.camera_nodes.insert(graph.camera_nodes.end(), camera_nodes_.begin(), camera_nodes_.end());
+  graph.factors = std::move(retired_factors_);
+  for (const PoseFactor& factor : factors_) graph.factors.push_back(factor);
+  retired_nodes_ = {};
+  retired_factors_ = {};
+  return graph;
 }
 
 // The odometry's camera pose, seen through a new odometry-frame node: the

@@ -34,6 +34,7 @@
 #include "lvslam/core/trajectory.h"
 #include "lvslam/system/online/pose_graph.h"
 #include "lvslam/system/online/step_gate.h"
+#include "lvslam/system/record_file.h"
 
 namespace lvslam::system {
 
@@ -92,6 +93,29 @@ struct FusedFrameOutput {
   std::optional<Matrix6d> covariance;
 };
 
+// A node as the estimator let it go: its time, its last estimate (it has
+// left the window's reach) and whether it is a camera frame's (the others
+// are odometry-frame and map nodes).
+struct RetiredNode {
+  double t = 0.0;
+  PoseNode node;
+  bool camera = false;
+};
+template <typename A>
+void fields(A& a, RetiredNode& n) {
+  static_assert(sizeof(RetiredNode) == 176, "RetiredNode changed: list its fields here");
+  a(n.t), a(n.node), a(n.camera);
+}
+
+// Every node in id order (time, last estimate), the camera frames' node
+// ids in frame order, and every accepted factor.
+struct EstimatorGraph {
+  std::vector<double> times;
+  std::vector<PoseNode> nodes;
+  std::vector<int> camera_nodes;
+  RecordFile<PoseFactor> factors;
+};
+
 class FusedEstimator {
  public:
   explicit FusedEstimator(const FusedEstimatorConfig& config);
@@ -103,15 +127,12 @@ class FusedEstimator {
   // output stays what it was; the window's later frames gain.
   void improveLidar(int camera_node, const LidarFrameInput& lidar);
 
-  // With the whole history kept (history_s < 0): every node (time, latest
-  // estimate), which of them are camera frames (the others are odometry
-  // and map frames), and the accepted factors; the offline refinement
-  // smooths this graph over the whole run. nodes() and factors() throw
-  // once part of the history was dropped.
-  const std::vector<double>& nodeTimes() const { return times_; }
-  const std::vector<PoseNode>& nodes() const;
-  const std::vector<int>& cameraNodes() const { return camera_nodes_; }
-  const std::vector<PoseFactor>& factors() const;
+  // The whole run's graph (what the offline refinement smooths): the part
+  // the history let go, kept on disk as it went (record_file.h), then the
+  // part it holds. Moves the disk part out: call it once, at the end.
+  EstimatorGraph takeGraph();
+  // Nodes held in memory (history_s of them; the rest went to disk).
+  std::size_t nodesHeld() const { return nodes_.size(); }
 
  private:
   struct Candidate {
@@ -149,6 +170,9 @@ class FusedEstimator {
   std::vector<PoseFactor> factors_;
   std::vector<std::vector<int>> factors_to_;  // per node, the accepted factors ending at it
   std::vector<int> camera_nodes_;             // in frame order
+  // What forget() let go, in id order.
+  RecordFile<RetiredNode> retired_nodes_;
+  RecordFile<PoseFactor> retired_factors_;
   // The odometry-frame node of the last LiDAR pose, and that pose.
   std::optional<std::pair<int, LidarFrameInput>> last_lidar_;
   std::size_t last_walk_registration_ = 0;  // the last degenerate registration its frame walked by

@@ -128,7 +128,7 @@ class FusedOnline final : public OnlineOutput {
   }
   std::vector<SwitchEvent> switches() const override { return detection_.switches(); }
   std::map<int, Eigen::Isometry3d> mapPlacements() const override { return placements_; }
-  const FusedEstimator* estimator() const override { return &estimator_; }
+  std::optional<EstimatorGraph> takeGraph() override { return estimator_.takeGraph(); }
 
  private:
   // A LiDAR pose the registration stood behind: scans registered on both

@@ -43,8 +43,9 @@ class OnlineOutput {
   virtual std::vector<SwitchEvent> switches() const { return {}; }
   // Where each visual map sits in the output world (T_world_map per map id).
   virtual std::map<int, Eigen::Isometry3d> mapPlacements() const { return {}; }
-  // The fused estimator's graph (fused mode only), for the offline refinement.
-  virtual const FusedEstimator* estimator() const { return nullptr; }
+  // The fused estimator's graph over the whole run (fused mode only), for
+  // the offline refinement: call once, after the last frame.
+  virtual std::optional<EstimatorGraph> takeGraph() { return std::nullopt; }
 };
 
 // `final_visual_poses`: feed the visual poses placed on the final keyframes

@@ -2,18 +2,6 @@
 
 namespace lvslam::system {
 
-void replayLidarInputs(OnlineOutput& output, const RecordFile<VisualFrameRecord>& visual,
-                       const RecordFile<LidarInputEvent>& inputs) {
-  for (const LidarInputEvent& input : inputs) {
-    if (input.improvement) {
-      output.lidarImproved(input.index, input.record);
-    } else if (input.index < visual.size()) {
-      const VisualFrameRecord record = visual[input.index];
-      output.add(&record, &input.record);
-    }
-  }
-}
-
 OnlineStage::OnlineStage(std::unique_ptr<OnlineOutput> output, bool has_visual, bool has_lidar)
     : output_(std::move(output)), has_visual_(has_visual), has_lidar_(has_lidar) {}
 
@@ -39,11 +27,6 @@ void OnlineStage::lidarReady(std::size_t index, const LidarFrameRecord& record) 
 void OnlineStage::emit(const VisualFrameRecord* visual, const LidarFrameRecord* lidar) {
   FrameOutput frame = output_->add(visual, lidar);
   const std::size_t index = frames_.size();
-  if (lidar) {
-    LidarInputEvent input{index, false, *lidar};
-    input.record.fusion_lines.clear();
-    lidar_inputs_.push_back(input);
-  }
   if (const auto arrival = arrivals_.find(index); arrival != arrivals_.end()) {
     frame.latency_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - arrival->second).count();
@@ -67,7 +50,6 @@ void OnlineStage::runReady() {
     const LidarInputEvent& event = lidar_events_.front();
     if (event.index < next) {  // out already: a better pose for the estimator's window
       output_->lidarImproved(event.index, event.record);
-      lidar_inputs_.push_back({event.index, true, event.record});
     } else {
       if (event.index > next) return;  // a frame the LiDAR never posed: finish() completes it
       if (has_visual_ && visual == visual_.end()) return;  // later LiDAR records wait for this frame
@@ -99,9 +81,9 @@ RecordFile<FrameOutput> OnlineStage::takeFrames() {
   return std::move(frames_);
 }
 
-RecordFile<LidarInputEvent> OnlineStage::takeLidarInputs() {
+std::optional<EstimatorGraph> OnlineStage::takeGraph() {
   const std::lock_guard lock(mutex_);
-  return std::move(lidar_inputs_);
+  return output_->takeGraph();
 }
 
 }  // namespace lvslam::system

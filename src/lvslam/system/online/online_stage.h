@@ -18,15 +18,10 @@
 #include <vector>
 
 #include "lvslam/system/online/online_output.h"
+#include "lvslam/system/record_fields.h"
 #include "lvslam/system/record_file.h"
 
 namespace lvslam::system {
-
-// Gives `output` the calls the stage made, again: each frame's visual
-// record with its first LiDAR record, and the improvements between, in
-// the order of `inputs` (OnlineStage::takeLidarInputs).
-void replayLidarInputs(OnlineOutput& output, const RecordFile<VisualFrameRecord>& visual,
-                       const RecordFile<LidarInputEvent>& inputs);
 
 class OnlineStage {
  public:
@@ -44,9 +39,8 @@ class OnlineStage {
   void finish(const RecordFile<VisualFrameRecord>& visual, const RecordFile<LidarFrameRecord>& lidar);
 
   RecordFile<FrameOutput> takeFrames();
-  // Every LiDAR record the output took, in the order it took them: replayed
-  // in that order with the visual records, they rebuild the online graph.
-  RecordFile<LidarInputEvent> takeLidarInputs();
+  // The fused estimator's graph over the whole run (OnlineOutput::takeGraph).
+  std::optional<EstimatorGraph> takeGraph();
   // Called with each frame's output as it is made, in frame order (from
   // whichever thread completed the frame, under the stage's lock).
   void onFrameOutput(std::function<void(const FrameOutput&)> listener) { listener_ = std::move(listener); }
@@ -61,7 +55,6 @@ class OnlineStage {
   std::mutex mutex_;
   std::map<std::size_t, VisualFrameRecord> visual_;  // ready, not yet out
   std::deque<LidarInputEvent> lidar_events_;        // in the LiDAR thread's order
-  RecordFile<LidarInputEvent> lidar_inputs_;        // as the output took them
   std::map<std::size_t, std::chrono::steady_clock::time_point> arrivals_;  // of the frames not yet out
   RecordFile<FrameOutput> frames_;
   std::function<void(const FrameOutput&)> listener_;

@@ -31,6 +31,19 @@ struct PoseNode {
   bool fixed = false;
 };
 
+// The fields a record file (record_file.h) writes and reads back; a field
+// added above fails the size check until it is listed here.
+template <typename A>
+void fields(A& a, PoseFactor& f) {
+  static_assert(sizeof(PoseFactor) == 448, "PoseFactor changed: list its fields here");
+  a(f.from), a(f.to), a(f.T_from_to), a(f.information), a(f.source);
+}
+template <typename A>
+void fields(A& a, PoseNode& n) {
+  static_assert(sizeof(PoseNode) == 144, "PoseNode changed: list its fields here");
+  a(n.T_world_camera), a(n.fixed);
+}
+
 struct PoseGraphSolveConfig {
   double huber_delta = 3.0;  // on the whitened residual's norm
   int max_iterations = 10;
