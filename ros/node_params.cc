@@ -69,6 +69,10 @@ NodeParams loadNodeParams(const ros::NodeHandle& nh) {
   p.lidar_frame = get<std::string>(nh, "lidar_frame", p.lidar_frame);
   p.base_frame = get<std::string>(nh, "base_frame", "");
   if (!p.base_frame.empty()) p.T_camera_base = transformParam(nh, "T_camera_base");
+  p.odom_frame = get<std::string>(nh, "odom_frame", "");
+  for (const std::string& frame : {p.camera_frame, p.lidar_frame, p.base_frame})
+    if (!p.odom_frame.empty() && (p.odom_frame == p.world_frame || p.odom_frame == frame))
+      throw Error(where(nh, "odom_frame"), "'" + p.odom_frame + "' must differ from world_frame, camera_frame, lidar_frame and base_frame");
   p.map_period_s = get<double>(nh, "map_period", p.map_period_s);
   p.map_voxel_m = get<double>(nh, "map_voxel", p.map_voxel_m);
   p.path_period_s = get<double>(nh, "path_period", p.path_period_s);

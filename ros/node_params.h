@@ -29,6 +29,11 @@ struct NodeParams {
   // Optional robot base: TF and odometry then give world -> base_frame
   // through the static T_camera_base (row-major 4x4).
   std::string base_frame;
+  // Optional REP-105 odometry frame: the pose then goes out as odom_frame ->
+  // camera (or base), with world_frame -> odom_frame the identity on
+  // /tf_static (the online pose never jumps: it is the odometry; loop
+  // corrections are offline only), as LIO-SAM publishes map -> odom.
+  std::string odom_frame;
   Eigen::Isometry3d T_camera_base = Eigen::Isometry3d::Identity();
   double map_period_s = 2.0;       // the LiDAR map is published this often (wall clock)
   double map_voxel_m = 0.2;

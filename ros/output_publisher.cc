@@ -56,7 +56,9 @@ Point toPoint(const Eigen::Vector3d& p) {
 }  // namespace
 
 OutputPublisher::OutputPublisher(ros::NodeHandle& nh, const NodeParams& params)
-    : params_(params), child_frame_(params.base_frame.empty() ? params.camera_frame : params.base_frame) {
+    : params_(params),
+      parent_frame_(params.odom_frame.empty() ? params.world_frame : params.odom_frame),
+      child_frame_(params.base_frame.empty() ? params.camera_frame : params.base_frame) {
   ros::NodeHandle root;
   odometry_ = nh.advertise<Odometry>("odometry", 100);
   tf_ = root.advertise<TFMessage>("/tf", 100);
@@ -71,6 +73,8 @@ OutputPublisher::OutputPublisher(ros::NodeHandle& nh, const NodeParams& params)
   fixed.transforms.push_back(toTransform(params.preset.T_camera_lidar, 0.0, params.camera_frame, params.lidar_frame));
   if (!params.base_frame.empty())
     fixed.transforms.push_back(toTransform(params.T_camera_base.inverse(), 0.0, params.base_frame, params.camera_frame));
+  if (!params.odom_frame.empty())
+    fixed.transforms.push_back(toTransform(Eigen::Isometry3d::Identity(), 0.0, params.world_frame, params.odom_frame));
   tf_static_.publish(fixed);
 }
 
@@ -95,7 +99,7 @@ void OutputPublisher::publishFrame(const system::FrameOutput& frame) {
 
   Odometry odom;
   odom.header.stamp = toRosTime(frame.t);
-  odom.header.frame_id = params_.world_frame.c_str();
+  odom.header.frame_id = parent_frame_.c_str();
   odom.child_frame_id = child_frame_.c_str();
   odom.pose.pose = toPose(T_world_child);
   // The estimator's covariance (fused mode; other modes leave it all zero,
@@ -116,13 +120,14 @@ void OutputPublisher::publishFrame(const system::FrameOutput& frame) {
   if (pathStep(path_msg_, T_world_child)) {
     PoseStamped stamped;
     stamped.header = odom.header;
+    stamped.header.frame_id = params_.world_frame.c_str();  // the same pose: world -> odom is the identity
     stamped.pose = odom.pose.pose;
     path_msg_.poses.push_back(stamped);
     path_changed_ = true;
   }
 
   TFMessage tf;
-  tf.transforms.push_back(toTransform(T_world_child, frame.t, params_.world_frame, child_frame_));
+  tf.transforms.push_back(toTransform(T_world_child, frame.t, parent_frame_, child_frame_));
   const DetectionState state = state_;
   const std::map<std::string, std::size_t> counts = last_counts_;
   lock.unlock();

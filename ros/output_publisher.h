@@ -2,9 +2,11 @@
 // What lvslam_node publishes, from the online output as each frame is made:
 //   ~odometry   nav_msgs/Odometry of the online pose (T_world_camera, or
 //               T_world_base with ~base_frame), twist from the last two poses
-//   /tf         world_frame -> camera_frame (or base_frame)
-//   /tf_static  camera_frame -> lidar_frame (T_camera_lidar), and
-//               base_frame -> camera_frame when there is a base (latched)
+//   /tf         world_frame -> camera_frame (or base_frame); with
+//               ~odom_frame, odom_frame -> camera_frame (or base_frame)
+//   /tf_static  camera_frame -> lidar_frame (T_camera_lidar),
+//               base_frame -> camera_frame when there is a base, and
+//               world_frame -> odom_frame (identity) with ~odom_frame (latched)
 //   ~path       nav_msgs/Path of the online poses, one per 10 cm or 5 deg of
 //               motion (an hour's path stays small), every ~path_period
 //   ~map        the live LiDAR map, PointCloud2 (every ~map_period; latched)
@@ -52,7 +54,7 @@ class OutputPublisher {
   void publishState(const DetectionState& state, const std::map<std::string, std::size_t>& counts);
 
   const NodeParams& params_;
-  std::string child_frame_;
+  std::string parent_frame_, child_frame_;  // of the published pose
   ros::Publisher odometry_, tf_, tf_static_, path_, map_, lines_, diagnostics_;
   std::mutex mutex_;
   Path path_msg_;

@@ -10,7 +10,8 @@
 # Its other outputs reach a subscriber too: the path (thinned), the map and
 # the line markers it publishes on shutdown (the run folder's map.ply and
 # lines.ply), the diagnostics with the detection module's switches (as many
-# as the run's summary counts), the static camera -> LiDAR transform.
+# as the run's summary counts), the static camera -> LiDAR transform, and
+# REP-105's frames (~odom_frame): map -> odom static, odom -> camera per frame.
 #   node_replay_test.sh LVSLAM LVSLAM_NODE ODOMETRY_RECORDER OUTPUT_PROBE WORK
 LVSLAM=$1 NODE=$2 RECORDER=$3 PROBE=$4 WORK=$5
 rm -rf "$WORK"
@@ -32,7 +33,7 @@ probe=$!
 children+=($probe)
 rosparam set /use_sim_time true
 "$NODE" __name:=lvslam _preset:="$WORK/seq.preset.yaml" _out:="$WORK/node" _deterministic:=true \
-  _queue_size:=1000 > node.log 2>&1 &
+  _queue_size:=1000 _odom_frame:=odom > node.log 2>&1 &
 node=$!
 children+=($node)
 wait_for_line node.log "lvslam_node: mode fused" 20
@@ -71,6 +72,8 @@ switches=$(sed -n 's/.*fusion:.* \([0-9]*\) switch(es).*/\1/p' node.log)
 read -r diagnostics diag_switches <<< "$(probe diagnostics)"
 [ "$diagnostics" -gt 0 ] && [ "$diag_switches" = "$switches" ] || fail "diagnostics: $(probe diagnostics), the run made $switches switches"
 [[ "$(probe tf_static)" == *"camera>velodyne"* ]] || fail "no static camera -> velodyne transform: $(probe tf_static)"
+[[ "$(probe tf_static)" == *"map>odom"* ]] || fail "no static map -> odom transform: $(probe tf_static)"
+[ "$(probe tf)" = "odom>camera" ] || fail "/tf carries $(probe tf), not odom -> camera alone"
 
 # Each odometry message after the first (which defines the world: exact)
 # carries the estimator's covariance: every standard deviation positive and

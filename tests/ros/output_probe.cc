@@ -1,10 +1,12 @@
 // Test helper: listens to what lvslam_node publishes besides its odometry
 // and, when stopped (SIGINT), writes one line per output to a file:
-//   path POSES / map POINTS / lines SEGMENTS / diagnostics MESSAGES SWITCHES / tf_static PARENT CHILD ...
+//   path POSES / map POINTS / lines SEGMENTS / diagnostics MESSAGES SWITCHES / tf_static PARENT>CHILD ...
+//   / tf PARENT>CHILD ... (each pair once)
 // (the last message of each, as a subscriber that joined at any time sees it).
 //   output_probe NODE_NAMESPACE OUT.txt      e.g. output_probe /lvslam probe.txt
 #include <fstream>
 #include <mutex>
+#include <set>
 #include <string>
 
 #include <fmt/format.h>
@@ -22,6 +24,7 @@ int main(int argc, char** argv) {
   std::mutex mutex;
   std::size_t path = 0, map = 0, lines = 0, diagnostics = 0;
   std::string switches = "-", tf_static;
+  std::set<std::string> tf;
   ros::NodeHandle nh;
   const auto s1 = nh.subscribe<Path>(ns + "/path", 10, [&](const boost::shared_ptr<const Path>& m) {
     std::lock_guard lock(mutex);
@@ -49,9 +52,15 @@ int main(int argc, char** argv) {
     std::lock_guard lock(mutex);
     for (const auto& t : m->transforms) tf_static += fmt::format(" {}>{}", t.header.frame_id.c_str(), t.child_frame_id.c_str());
   });
+  const auto s6 = nh.subscribe<TFMessage>("/tf", 100, [&](const boost::shared_ptr<const TFMessage>& m) {
+    std::lock_guard lock(mutex);
+    for (const auto& t : m->transforms) tf.insert(fmt::format("{}>{}", t.header.frame_id.c_str(), t.child_frame_id.c_str()));
+  });
   ros::spin();
   std::lock_guard lock(mutex);
-  std::ofstream(argv[2]) << fmt::format("path {}\nmap {}\nlines {}\ndiagnostics {} {}\ntf_static{}\n", path, map, lines,
-                                        diagnostics, switches, tf_static);
+  std::string tf_pairs;
+  for (const std::string& pair : tf) tf_pairs += " " + pair;
+  std::ofstream(argv[2]) << fmt::format("path {}\nmap {}\nlines {}\ndiagnostics {} {}\ntf_static{}\ntf{}\n", path, map,
+                                        lines, diagnostics, switches, tf_static, tf_pairs);
   return 0;
 }
