@@ -19,7 +19,7 @@ cd "$WORK"
 "$BIN/lvslam" convert to-bag --sequence "$SEQ" --out seq.bag > /dev/null
 "$BIN/lvslam" run --sequence "$SEQ" $det_flag --out run > run.log
 start_roscore > /dev/null
-"$BIN/odometry_recorder" /lvslam/odometry odometry.tum > recorder.log 2>&1 &
+"$BIN/odometry_recorder" /lvslam/odometry odometry.tum sigmas.txt > recorder.log 2>&1 &
 children+=($!)
 recorder=${children[-1]}
 rosparam set /use_sim_time true
@@ -30,10 +30,11 @@ node=${children[-1]}
 wait_for_line node.log "lvslam_node: mode" 20
 rosbag play --clock --delay 2 --quiet --rate "$RATE" seq.bag > play.log 2>&1
 stop_process "$node" 300
+node_code=$stopped_code
 sleep 0.5
 stop_process "$recorder" 10
 ate() { sed -n 's/.*"ate": {"rmse": \([^,]*\),.*/\1/p'; }
-echo "rate ${RATE}x ${DET:-threaded}; node exit $stopped_code"
+echo "rate ${RATE}x ${DET:-threaded}; node exit $node_code, recorder exit $stopped_code"
 grep -o "lvslam_node: [0-9]* sensor items.*\|lvslam_node: publish latency.*" node.log | sed 's/\x1b\[0m//g'
 echo "poses: lvslam run $(wc -l < run/trajectory.tum), odometry recorded $(wc -l < odometry.tum)"
 echo "ATE rmse node vs ground truth: $("$BIN/lvslam" eval --sequence "$SEQ" --est odometry.tum --json | ate) m"
