@@ -1,4 +1,4 @@
-#include "lvslam/system/online/detection_module.h"
+#include "lvslam/system/detection/detection_module.h"
 
 #include <gtest/gtest.h>
 

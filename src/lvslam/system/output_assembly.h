@@ -10,7 +10,7 @@
 
 #include "lvslam/core/trajectory.h"
 #include "lvslam/io/ply_writer.h"
-#include "lvslam/system/online/detection_module.h"
+#include "lvslam/system/detection/detection_module.h"
 #include "lvslam/system/system_config.h"
 #include "lvslam/system/system_pipeline.h"
 

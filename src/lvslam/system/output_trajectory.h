@@ -14,7 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "lvslam/core/trajectory.h"
-#include "lvslam/system/online/detection_module.h"
+#include "lvslam/system/detection/detection_module.h"
 
 namespace lvslam::system {
 

@@ -55,7 +55,7 @@ std::string visualJson(const VisualFrameRecord& v) {
   return o.str();
 }
 
-std::string frameJson(const PipelineRecords& records, const SystemOutput& output, std::size_t j, bool timings) {
+std::string frameJson(const PipelineRecords& records, std::size_t j, bool timings) {
   // The online part is what stats_frames.jsonl streamed during the run.
   JsonObject o = onlineFrameJson(records.online[j], timings);
   const std::optional<VisualFrameRecord> visual = j < records.visual.size() ? std::optional(records.visual[j]) : std::nullopt;
@@ -147,7 +147,7 @@ std::string summaryJson(const RunSummary& s, const RunAccuracy& accuracy, bool t
   return o.str();
 }
 
-double lostFraction(const PipelineRecords& records, const SystemOutput& output, RunMode mode) {
+double lostFraction(const PipelineRecords& records, RunMode mode) {
   const auto share = [](std::size_t part, std::size_t whole) {
     return whole == 0 ? 1.0 : static_cast<double>(part) / static_cast<double>(whole);
   };
@@ -222,7 +222,7 @@ RunSummary summarize(const PipelineRecords& records, const SystemOutput& output,
   for (const LidarFrameRecord& l : records.lidar) lines += l.fusion_lines.size();
   s.fusion_lines_per_frame = records.lidar.empty() ? 0.0 : static_cast<double>(lines) / records.lidar.size();
   s.switches = output.switches.size();
-  s.lost_fraction = lostFraction(records, output, mode);
+  s.lost_fraction = lostFraction(records, mode);
   addOnlineFigures(records.online, s);
   s.sequence_seconds = records.last_time - records.first_time;
   s.wall_seconds = wall_seconds;
@@ -278,7 +278,7 @@ void writeStatsJson(const std::filesystem::path& path, const PipelineRecords& re
     return JsonObject().addNumber("t", e.t).addString("to", sourceName(e.to)).addString("reason", e.reason).str();
   });
   writeJsonList(member("frames"), records.online.size(),
-                [&](std::size_t j) { return frameJson(records, output, j, with_timings); });
+                [&](std::size_t j) { return frameJson(records, j, with_timings); });
   writeJsonList(member("scans"), records.scans.size(),
                 [&](std::size_t i) { return scanJson(records.scans[i], with_timings); });
   if (output.loop) member("loop") << loopJson(*output.loop);

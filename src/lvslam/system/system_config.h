@@ -12,7 +12,7 @@
 #include "lvslam/fusion/fusion_config.h"
 #include "lvslam/lidar/lidar_config.h"
 #include "lvslam/loop/loop_config.h"
-#include "lvslam/system/online/detection_module.h"
+#include "lvslam/system/detection/detection_module.h"
 #include "lvslam/system/online/fused_estimator.h"
 #include "lvslam/visual/tracking/visual_slam_config.h"
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "lvslam/system/frame_records.h"
-#include "lvslam/system/online/detection_module.h"
+#include "lvslam/system/detection/detection_module.h"
 #include "lvslam/system/online/fused_estimator.h"
 #include "lvslam/system/system_config.h"
 
