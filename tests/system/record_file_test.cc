@@ -205,11 +205,14 @@ TEST(RecordFile, ManyRecordsReadBackInOrderWhileAppending) {
   for (const VisualFrameRecord& v : file) expectFullVisualRecord(v, i++);
   EXPECT_EQ(i, 300);
   RecordFile<VisualFrameRecord> copy = file;
-  file.update([](VisualFrameRecord& v, std::size_t index) { v.keypoint_depths = index * 2; });
+  file.update([](VisualFrameRecord& v) { v.keypoint_depths = static_cast<std::size_t>(v.t) * 2; });
   EXPECT_EQ(file[123].keypoint_depths, 246u);
   EXPECT_EQ(file[123].t, 123.0);
   EXPECT_EQ(copy[123].keypoint_depths, 14u);
   EXPECT_THROW(static_cast<void>(file[300]), Error);
+  EXPECT_FALSE(file.get(300));
+  ASSERT_TRUE(file.get(299));
+  EXPECT_EQ(file.get(299)->t, 299.0);
 }
 
 // The records go to the temporary directory: one that is not there is

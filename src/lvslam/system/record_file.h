@@ -179,15 +179,16 @@ class RecordFile {
     return record;
   }
   const T back() const { return (*this)[size() - 1]; }
+  // Record i, none past the end.
+  std::optional<T> get(std::size_t i) const { return i < size() ? std::optional<T>((*this)[i]) : std::nullopt; }
 
-  // Every record through `change` (the record, or the record and its index), in order.
+  // Every record through `change`, in order.
   template <typename Change>
   void update(Change change) {
     RecordFile changed;
     for (std::size_t i = 0; i < size(); ++i) {
       T record = (*this)[i];
-      if constexpr (std::is_invocable_v<Change, T&, std::size_t>) change(record, i);
-      else change(record);
+      change(record);
       changed.push_back(record);
     }
     *this = std::move(changed);

@@ -58,8 +58,8 @@ std::string visualJson(const VisualFrameRecord& v) {
 std::string frameJson(const PipelineRecords& records, std::size_t j, bool timings) {
   // The online part is what stats_frames.jsonl streamed during the run.
   JsonObject o = onlineFrameJson(records.online[j], timings);
-  const std::optional<VisualFrameRecord> visual = j < records.visual.size() ? std::optional(records.visual[j]) : std::nullopt;
-  const std::optional<LidarFrameRecord> lidar = j < records.lidar.size() ? std::optional(records.lidar[j]) : std::nullopt;
+  const std::optional<VisualFrameRecord> visual = records.visual.get(j);
+  const std::optional<LidarFrameRecord> lidar = records.lidar.get(j);
   const VisualFrameRecord* v = visual ? &*visual : nullptr;
   const LidarFrameRecord* l = lidar ? &*lidar : nullptr;
   if (v) o.addRaw("visual", visualJson(*v));

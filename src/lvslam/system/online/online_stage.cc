@@ -70,7 +70,7 @@ void OnlineStage::finish(const RecordFile<VisualFrameRecord>& visual, const Reco
     const auto v = visual_.find(next);
     const bool has_lidar_record = next < lidar.size();
     if ((has_visual_ && v == visual_.end()) || (has_lidar_ && !has_lidar_record)) return;
-    const std::optional<LidarFrameRecord> l = has_lidar_ ? std::optional(lidar[next]) : std::nullopt;
+    const std::optional<LidarFrameRecord> l = has_lidar_ ? lidar.get(next) : std::nullopt;
     emit(has_visual_ ? &v->second : nullptr, l ? &*l : nullptr);
     runReady();
   }
