@@ -189,7 +189,7 @@ TEST(LidarWorker, FramesNoSweepCoversAreInterpolatedAcrossTheGapAndMarkedUnrelia
 TEST(LidarWorker, FusedModeHandsTheInterpolatedPosesOfReliableFramesToTheVisualSideInTheCameraFrame) {
   SystemConfig config;  // fused, LiDAR pose priors on
   config.loop.enabled = false;
-  ASSERT_TRUE(config.visual.visual.use_lidar_pose_priors);
+  ASSERT_TRUE(config.visual.modules.use_lidar_pose_priors);
   Calibration calibration;
   calibration.camera = PinholeCamera(640, 480, 450.0, 450.0, 320.0, 240.0);
   Eigen::Matrix3d R_camera_lidar;

@@ -55,7 +55,7 @@ TEST(SystemConfig, ReadsEverySection) {
   EXPECT_FALSE(c.final_map_poses);
   EXPECT_FALSE(c.final_map_relocation);
   EXPECT_DOUBLE_EQ(c.lidar.preprocess.voxel_size, 0.4);
-  EXPECT_EQ(c.visual.visual.features.orb.max_features, 543);
+  EXPECT_EQ(c.visual.modules.features.orb.max_features, 543);
   EXPECT_DOUBLE_EQ(c.fusion.arc_step_deg, 0.35);
   EXPECT_EQ(c.detection.min_tracked_points, 17);
   EXPECT_EQ(c.detection.min_tracked_lines, 3);
@@ -116,10 +116,10 @@ TEST(SystemConfig, EachAblationSwitchesOffItsContribution) {
     applyAblation(c, name, "--ablate");
     return c;
   };
-  EXPECT_FALSE(ablated("direction-residual").visual.visual.local_window.ba.use_direction_residual);
+  EXPECT_FALSE(ablated("direction-residual").visual.modules.local_window.ba.use_direction_residual);
   EXPECT_FALSE(ablated("lidar-direction-refinement").lidar_direction_refinement);
   EXPECT_FALSE(ablated("fusion-lines").fusion_lines_in_tracking);
-  EXPECT_FALSE(ablated("keypoint-depths").visual.visual.use_keypoint_depths);
+  EXPECT_FALSE(ablated("keypoint-depths").visual.modules.use_keypoint_depths);
   const SystemConfig paper_output = ablated("paper-output");
   EXPECT_TRUE(paper_output.paper_output);
   EXPECT_FALSE(SystemConfig{}.paper_output);

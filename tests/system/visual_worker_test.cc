@@ -44,7 +44,7 @@ std::vector<Tracked> feed(VisualWorker& worker, double from, double to,
   request.sequence_dir = fastRoom();
   Recording recording = openRecording(request);
   const Calibration calibration = recording.source->calibration();
-  visual::FeatureExtractor extractor(simConfig().visual.visual.features, *calibration.camera);
+  visual::FeatureExtractor extractor(simConfig().visual.modules.features, *calibration.camera);
   std::vector<Tracked> tracked;
   std::optional<double> first;
   while (auto data = recording.source->next()) {

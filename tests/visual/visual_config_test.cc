@@ -12,7 +12,7 @@ namespace {
 VisualSlamConfig loadSlam(const std::string& text) {
   return loadSection<VisualSlamConfig>(YamlConfig::loadString(text, "test.yaml"), "visual");
 }
-VisualConfig load(const std::string& text) { return loadSlam(text).visual; }
+VisualConfig load(const std::string& text) { return loadSlam(text).modules; }
 
 // The text fails to load with a message that names `key`.
 void expectErrorNaming(const std::string& text, const std::string& key) {
@@ -157,7 +157,7 @@ TEST(VisualConfig, TrackingAndMappingSections) {
   EXPECT_DOUBLE_EQ(c.init_window_px, 90.0);
   EXPECT_EQ(c.min_init_matches, 60);
   EXPECT_EQ(c.max_init_frames, 20);
-  EXPECT_DOUBLE_EQ(c.visual.initializer.sigma_px, 1.5);
+  EXPECT_DOUBLE_EQ(c.modules.initializer.sigma_px, 1.5);
   EXPECT_DOUBLE_EQ(c.search_radius_px, 12.0);
   EXPECT_EQ(c.min_tracked, 25);
   EXPECT_EQ(c.track_max_distance, 64);
@@ -165,14 +165,14 @@ TEST(VisualConfig, TrackingAndMappingSections) {
   EXPECT_EQ(c.relocalize_frames, 10);
   EXPECT_EQ(c.relocalize_candidates, 3u);
   EXPECT_EQ(c.relocalize_min_inliers, 40);
-  EXPECT_FALSE(c.visual.point_matching.check_orientation);
-  EXPECT_DOUBLE_EQ(c.visual.line_matching.max_offset_px, 50.0);
-  EXPECT_EQ(c.visual.local_map.max_voted, 15u);
+  EXPECT_FALSE(c.modules.point_matching.check_orientation);
+  EXPECT_DOUBLE_EQ(c.modules.line_matching.max_offset_px, 50.0);
+  EXPECT_EQ(c.modules.local_map.max_voted, 15u);
   EXPECT_DOUBLE_EQ(c.triangulation.chi2_epipolar, 3.0);
   EXPECT_EQ(c.triangulation.max_depth_points, 50);
   EXPECT_DOUBLE_EQ(c.culling.min_found_ratio, 0.3);
   EXPECT_DOUBLE_EQ(c.depth_check.fusion_ratio, 0.25);
-  EXPECT_EQ(c.visual.local_window.fixed_oldest, 3);
+  EXPECT_EQ(c.modules.local_window.fixed_oldest, 3);
   expectErrorNaming("visual:\n  tracking: {search_radius_px: 0}\n", "visual.tracking.search_radius_px");
   expectErrorNaming("visual:\n  tracking: {max_descriptor_distance: 257}\n", "visual.tracking.max_descriptor_distance");
   expectErrorNaming("visual:\n  usability: {min_brightness: 250}\n", "visual.usability.min_brightness");

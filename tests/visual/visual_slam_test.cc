@@ -43,7 +43,7 @@ TEST_F(VisualSlamTest, WithDepthTheFirstFrameStartsAMetricMapAndTracksWithinCent
     depth_errors.push_back(std::abs(p.z() / z - 1.0));
     EXPECT_NEAR(camera().fx() * p.x() / p.z() + camera().cx(), first.features.points[i].x(), 1e-6);
   }
-  ASSERT_GE(depth_errors.size(), static_cast<size_t>(VisualSlamConfig{}.visual.initializer.min_triangulated));
+  ASSERT_GE(depth_errors.size(), static_cast<size_t>(VisualSlamConfig{}.modules.initializer.min_triangulated));
   // Read through a local plane of 5 % tolerance: most within it, the median
   // close to exact; a corner on an occluding edge may take either surface.
   std::sort(depth_errors.begin(), depth_errors.end());
@@ -240,7 +240,7 @@ TEST_F(VisualSlamTest, KeypointDepthsAreStoredOnKeyframesAndMakePoints) {
 TEST_F(VisualSlamTest, TrackingAnExtractedImageEqualsTrackingTheImage) {
   VisualSlam whole(VisualSlamConfig{}, camera());
   VisualSlam split(VisualSlamConfig{}, camera());
-  FeatureExtractor extractor(VisualSlamConfig{}.visual.features, camera());
+  FeatureExtractor extractor(VisualSlamConfig{}.modules.features, camera());
   int posed = 0;
   for (size_t i = 0; i < 40 && i < frames_->size(); ++i) {
     const RenderedFrame& f = (*frames_)[i];
@@ -268,7 +268,7 @@ TEST_F(VisualSlamTest, TrackingAnExtractedImageEqualsTrackingTheImage) {
 TEST_F(VisualSlamTest, LidarPosesReachTheKeyframesOfTheirTimes) {
   for (const bool enabled : {true, false}) {
     VisualSlamConfig config;
-    config.visual.use_lidar_pose_priors = enabled;
+    config.modules.use_lidar_pose_priors = enabled;
     VisualSlam slam(config, camera());
     Vector6d xi;
     xi << 2.0, 1.0, 0.0, 0.0, 0.0, 0.7;

@@ -12,14 +12,14 @@ LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibrat
     : odometry_(config.lidar),
       keypoint_depth_radius_px_(config.keypoint_depth_radius_px),
       keypoint_depths_from_features_(config.keypoint_depth_source == KeypointDepthSource::kFeatures &&
-                                     config.visual.visual.use_keypoint_depths),
+                                     config.visual.modules.use_keypoint_depths),
       map_(config.map_voxel) {
   if (config.mode == RunMode::kFused && calibration.camera) {
     fusion_.emplace(*calibration.camera, calibration.T_camera_lidar, config.fusion);
     fusion_->setLidarFeedback(config.lidar_direction_refinement);
     extrinsic_check_.emplace(*calibration.camera, config.fusion);
     // Camera-time poses are only worth handing back when the visual side uses them.
-    if (config.visual.visual.use_lidar_pose_priors) T_lidar_camera_ = calibration.T_camera_lidar.inverse();
+    if (config.visual.modules.use_lidar_pose_priors) T_lidar_camera_ = calibration.T_camera_lidar.inverse();
   }
   if (config.loop.enabled) {
     keyframe_selector_.emplace(config.loop.keyframe_distance, config.loop.keyframe_angle_deg * M_PI / 180.0);

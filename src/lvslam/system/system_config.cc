@@ -31,13 +31,13 @@ bool relocatesInFinalMaps(const SystemConfig& config) {
 
 void applyAblation(SystemConfig& config, const std::string& name, const std::string& where) {
   if (name == "direction-residual")
-    config.visual.visual.local_window.ba.use_direction_residual = false;
+    config.visual.modules.local_window.ba.use_direction_residual = false;
   else if (name == "lidar-direction-refinement")
     config.lidar_direction_refinement = false;
   else if (name == "fusion-lines")
     config.fusion_lines_in_tracking = false;
   else if (name == "keypoint-depths")
-    config.visual.visual.use_keypoint_depths = false;
+    config.visual.modules.use_keypoint_depths = false;
   else if (name == "paper-output")
     config.paper_output = true;
   else

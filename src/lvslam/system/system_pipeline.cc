@@ -45,7 +45,7 @@ Workers makeWorkers(const SensorSource& source, const SystemConfig& config) {
   if (want_lidar) workers.lidar = std::make_unique<LidarWorker>(config, calibration);
   if (want_visual) {
     workers.visual = std::make_unique<VisualWorker>(config, calibration, source.hasLidar());
-    workers.extractor = std::make_unique<visual::FeatureExtractor>(config.visual.visual.features, *calibration.camera);
+    workers.extractor = std::make_unique<visual::FeatureExtractor>(config.visual.modules.features, *calibration.camera);
     workers.camera = *calibration.camera;
   }
   return workers;

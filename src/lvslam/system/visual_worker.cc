@@ -44,10 +44,10 @@ visual::VisualSlamConfig visualSlamConfig(const SystemConfig& config, bool depth
 VisualWorker::VisualWorker(const SystemConfig& config, const Calibration& calibration, bool has_lidar)
     : calibration_(calibration),
       use_fusion_lines_(config.fusion_lines_in_tracking),
-      use_keypoint_depths_(config.visual.visual.use_keypoint_depths),
+      use_keypoint_depths_(config.visual.modules.use_keypoint_depths),
       hint_max_dt_(config.depth_hint_max_dt),
       has_lidar_(has_lidar),
-      depths_from_scans_(has_lidar && config.visual.visual.use_keypoint_depths &&
+      depths_from_scans_(has_lidar && config.visual.modules.use_keypoint_depths &&
                          (config.mode == RunMode::kVisual ||
                           config.keypoint_depth_source == KeypointDepthSource::kScans)),
       keypoint_depth_radius_px_(config.keypoint_depth_radius_px),

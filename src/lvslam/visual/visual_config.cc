@@ -34,7 +34,7 @@ void addFeatureKeys(ConfigKeys& keys, FeatureExtractorConfig& f) {
 
 // Start of a map and tracking of the frames after it.
 void addTrackingKeys(ConfigKeys& keys, VisualSlamConfig& c) {
-  auto& v = c.visual;
+  auto& v = c.modules;
   keys.add("usability.min_keypoints", c.min_keypoints)
       .add("usability.min_brightness", c.usability.min_brightness)
       .add("usability.max_brightness", c.usability.max_brightness)
@@ -109,7 +109,7 @@ void addMappingKeys(ConfigKeys& keys, VisualSlamConfig& c) {
       .add("culling.redundant_observers", c.culling.redundant_observers);
   keys.add("line_depth_check.ratio", c.depth_check.ratio)
       .add("line_depth_check.fusion_ratio", c.depth_check.fusion_ratio);
-  auto& w = c.visual.local_window;
+  auto& w = c.modules.local_window;
   keys.add("bundle_adjustment.window_size", w.window_size)
       .add("bundle_adjustment.fixed_oldest", w.fixed_oldest)
       .add("bundle_adjustment.first_stage_iterations", w.ba.first_stage_iterations)
@@ -123,8 +123,8 @@ void addMappingKeys(ConfigKeys& keys, VisualSlamConfig& c) {
       .add("keypoint_depths.huber_delta", w.ba.depth_huber_delta)
       .add("keypoint_depths.chi2", w.ba.chi2_depth);
   // The map correction's pose graph weighs its priors as local BA does.
-  auto& m = c.visual.map_correction;
-  keys.add("lidar_pose_priors.enabled", c.visual.use_lidar_pose_priors)
+  auto& m = c.modules.map_correction;
+  keys.add("lidar_pose_priors.enabled", c.modules.use_lidar_pose_priors)
       .add("lidar_pose_priors.sigma_m", w.ba.prior_sigma_m, m.graph.prior_sigma_m)
       .add("lidar_pose_priors.sigma_deg", w.ba.prior_sigma_deg, m.graph.prior_sigma_deg)
       .add("lidar_pose_priors.huber_delta", w.ba.prior_huber_delta, m.graph.prior_huber_delta)
@@ -137,7 +137,7 @@ void addMappingKeys(ConfigKeys& keys, VisualSlamConfig& c) {
 }
 
 void validateTracking(const VisualSlamConfig& c, const ValueCheck& check) {
-  const VisualConfig& v = c.visual;
+  const VisualConfig& v = c.modules;
   check(c.min_keypoints >= 0, "usability.min_keypoints", "must not be negative");
   check(c.usability.min_brightness < c.usability.max_brightness, "usability.min_brightness",
         "need min_brightness < max_brightness");
@@ -171,7 +171,7 @@ void validateTracking(const VisualSlamConfig& c, const ValueCheck& check) {
 }
 
 void validateMapping(const VisualSlamConfig& c, const ValueCheck& check) {
-  const LocalWindowConfig& w = c.visual.local_window;
+  const LocalWindowConfig& w = c.modules.local_window;
   check(c.triangulation.ratio > 0.0 && c.triangulation.ratio <= 1.0, "triangulation.ratio", "must be in (0, 1]");
   check(c.triangulation.max_depth_points >= 0, "triangulation.max_depth_points", "must not be negative");
   check(c.culling.min_found_ratio >= 0.0 && c.culling.min_found_ratio <= 1.0, "culling.min_found_ratio",
@@ -191,7 +191,7 @@ void validateMapping(const VisualSlamConfig& c, const ValueCheck& check) {
   check(w.ba.prior_sigma_m > 0.0, "lidar_pose_priors.sigma_m", "must be positive");
   check(w.ba.prior_sigma_deg > 0.0, "lidar_pose_priors.sigma_deg", "must be positive");
   check(w.ba.prior_huber_delta > 0.0, "lidar_pose_priors.huber_delta", "must be positive");
-  const MapCorrectionConfig& m = c.visual.map_correction;
+  const MapCorrectionConfig& m = c.modules.map_correction;
   const std::string correction = "lidar_pose_priors.map_correction.";
   check(m.every_keyframes >= 0, correction + "every_keyframes", "must not be negative (0: never)");
   check(m.window_keyframes >= 0, correction + "window_keyframes", "must not be negative (0: the whole map)");
@@ -205,7 +205,7 @@ void validateMapping(const VisualSlamConfig& c, const ValueCheck& check) {
 
 ConfigKeys configKeys(VisualSlamConfig& config) {
   ConfigKeys keys;
-  addFeatureKeys(keys, config.visual.features);
+  addFeatureKeys(keys, config.modules.features);
   addTrackingKeys(keys, config);
   addMappingKeys(keys, config);
   return keys;
@@ -224,9 +224,9 @@ void validate(const VisualSlamConfig& config, const std::string& file) {
       check(false, key, e.why());
     }
   };
-  constructs("orb", [&] { OrbExtractor orb(config.visual.features.orb); });
-  constructs("lines", [&] { LineExtractor lines(config.visual.features.lines); });
-  constructs("initializer", [&] { TwoViewInitializer init(config.visual.initializer, PinholeIntrinsics{}); });
+  constructs("orb", [&] { OrbExtractor orb(config.modules.features.orb); });
+  constructs("lines", [&] { LineExtractor lines(config.modules.features.lines); });
+  constructs("initializer", [&] { TwoViewInitializer init(config.modules.initializer, PinholeIntrinsics{}); });
 }
 
 }  // namespace lvslam::visual

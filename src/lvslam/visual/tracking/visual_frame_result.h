@@ -47,7 +47,7 @@ struct VisualFusionInfo {
   // inlier points); with a pose_information only.
   std::optional<double> anchor_time;
   // The map was pulled onto the LiDAR odometry in this frame
-  // (config.visual.map_correction): earlier poses of this map are, in the
+  // (config.modules.map_correction): earlier poses of this map are, in the
   // corrected map, T_new_old * T_world_camera (the newest keyframe's move).
   std::optional<Eigen::Isometry3d> T_new_old;
 };

@@ -47,18 +47,18 @@ FrameTrackerConfig trackerConfig(const VisualSlamConfig& c) {
   t.search_radius_px = c.search_radius_px;
   t.refine_radius_px = c.refine_radius_px;
   t.min_inliers = c.min_tracked;
-  t.point_matching = c.visual.point_matching;
+  t.point_matching = c.modules.point_matching;
   t.point_matching.max_distance = c.track_max_distance;
-  t.line_matching = c.visual.line_matching;
-  t.pose = c.visual.pose;
+  t.line_matching = c.modules.line_matching;
+  t.pose = c.modules.pose;
   return t;
 }
 
 LocalMapperConfig mapperConfig(const VisualSlamConfig& c) {
   LocalMapperConfig m;
   m.points = c.triangulation;
-  m.line_matching = c.visual.line_matching;
-  m.window = c.visual.local_window;
+  m.line_matching = c.modules.line_matching;
+  m.window = c.modules.local_window;
   m.culling = c.culling;
   m.depth_check = c.depth_check;
   return m;
@@ -83,8 +83,8 @@ struct VisualSlam::Impl {
       : config(c),
         camera(cam),
         K(intrinsicsOf(cam)),
-        extractor(c.visual.features, cam),
-        initializer(c.visual.initializer, K),
+        extractor(c.modules.features, cam),
+        initializer(c.modules.initializer, K),
         tracker(trackerConfig(c)),
         mapper(mapperConfig(c), K) {}
 
@@ -153,8 +153,8 @@ struct VisualSlam::Impl {
 // Every few keyframes the whole map is pulled onto the LiDAR poses
 // (module/odometry_map_correction.h), once the odometry is aligned with it.
 void VisualSlam::Impl::correctWithOdometry(int keyframe) {
-  const MapCorrectionConfig& c = config.visual.map_correction;
-  if (!config.visual.use_lidar_pose_priors || c.every_keyframes == 0 || !map.T_world_odom()) return;
+  const MapCorrectionConfig& c = config.modules.map_correction;
+  if (!config.modules.use_lidar_pose_priors || c.every_keyframes == 0 || !map.T_world_odom()) return;
   if (++keyframes_since_correction < c.every_keyframes) return;
   keyframes_since_correction = 0;
   const MapCorrectionResult r = correctMapWithOdometry(map, c);
@@ -240,7 +240,7 @@ void VisualSlam::Impl::setReference(const std::vector<double>& depths) {
   const auto hinted = std::count_if(depths.begin(), depths.end(), [](double z) { return std::isfinite(z); });
   // Hints are given but too few reach keypoints (e.g. the LiDAR sweep was
   // elsewhere at this image's time): a later frame is a better metric anchor.
-  const bool unhinted = hinted < config.visual.initializer.min_depth_hints;
+  const bool unhinted = hinted < config.modules.initializer.min_depth_hints;
   if (hints_given && unhinted && skipped_references < config.max_unhinted_references) {
     ++skipped_references;
     reference.reset();
@@ -258,7 +258,7 @@ void VisualSlam::Impl::initialize(const std::vector<double>& depths, VisualFrame
   if (initializeFromDepths(depths, result)) return;
   if (!reference || frame_index - reference_frame > config.max_init_frames) return setReference(depths);
   const std::vector<PointMatch> matches = matchInWindow(reference->features, current.features, current.grid,
-                                                        config.init_window_px, config.visual.point_matching);
+                                                        config.init_window_px, config.modules.point_matching);
   if (static_cast<int>(matches.size()) < config.min_init_matches) return setReference(depths);
   std::vector<TwoViewMatch> pairs;
   std::vector<DepthHint> hints;
@@ -270,8 +270,8 @@ void VisualSlam::Impl::initialize(const std::vector<double>& depths, VisualFrame
   const auto init = initializer.initialize(reference->features.points, current.features.points, pairs);
   if (!init) return;
   const auto built = buildInitialMap(map, {reference_time, &reference->features},
-                                     {current.features.timestamp, &current.features}, *init, pairs, K, config.visual,
-                                     config.visual.initializer.min_triangulated);
+                                     {current.features.timestamp, &current.features}, *init, pairs, K, config.modules,
+                                     config.modules.initializer.min_triangulated);
   if (!built) return setReference(depths);
   metric = init->metric;
   mapper.addRecentLines(built->lines, built->keyframe2);
@@ -287,7 +287,7 @@ void VisualSlam::Impl::initialize(const std::vector<double>& depths, VisualFrame
 }
 
 bool VisualSlam::Impl::initializeFromDepths(const std::vector<double>& depths, VisualFrameResult& result) {
-  const int min_points = std::max(config.visual.initializer.min_triangulated,
+  const int min_points = std::max(config.modules.initializer.min_triangulated,
                                   static_cast<int>(std::ceil(config.min_depth_share * depths.size())));
   const auto built = buildDepthMap(map, {current.features.timestamp, &current.features}, depths, K, min_points);
   if (!built) return false;
@@ -339,11 +339,11 @@ std::vector<int> VisualSlam::Impl::pendingFusionLines() {
 
 bool VisualSlam::Impl::trackFrame(VisualFrameResult& result) {
   if (!map.hasKeyframe(reference_keyframe)) return false;
-  LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.visual.local_map);
+  LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.modules.local_map);
   const double now = current.features.timestamp;
   const Eigen::Isometry3d T_predicted = predictPose(motion, T_last, now - last_time);
-  const double radius = config.visual.local_map.nearby_radius_depths * medianSceneDepth(map, reference_keyframe);
-  for (const int kf : nearbyKeyframes(map, T_predicted, radius, keyframes.keyframes, config.visual.local_map))
+  const double radius = config.modules.local_map.nearby_radius_depths * medianSceneDepth(map, reference_keyframe);
+  for (const int kf : nearbyKeyframes(map, T_predicted, radius, keyframes.keyframes, config.modules.local_map))
     keyframes.keyframes.push_back(kf);
   const LocalMap local = collectLocalMap(map, keyframes.keyframes, pendingFusionLines());
   FrameTrackingResult tracked = trackLocalMap(map, local, T_predicted, K, 1.0, tracker, current);
@@ -373,7 +373,7 @@ bool VisualSlam::Impl::needKeyframe() const {
     ref_tracked = 0;
     for (const int id : map.keyframe(reference_keyframe).point_landmark) ref_tracked += id >= 0;
   }
-  return keyframeNeeded(config.visual.keyframes, current.point_inliers, ref_tracked, frame_index - last_keyframe_frame);
+  return keyframeNeeded(config.modules.keyframes, current.point_inliers, ref_tracked, frame_index - last_keyframe_frame);
 }
 
 void VisualSlam::Impl::insertKeyframe() {
@@ -423,7 +423,7 @@ bool VisualSlam::Impl::relocalize(VisualFrameResult& result) {
   const std::vector<Eigen::Isometry3d> guesses =
       relocalizationGuesses(map, predictPose(motion, T_last, current.features.timestamp - last_time), T_last,
                             reference_keyframe, config.relocalize_candidates);
-  const LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.visual.local_map);
+  const LocalKeyframes keyframes = selectLocalKeyframes(map, last_points, reference_keyframe, config.modules.local_map);
   const LocalMap local = collectLocalMap(map, keyframes.keyframes, {});
   const std::optional<FrameTrackingResult> tracked = relocalizeFrame(
       map, local, guesses, K, config.recovery_radius_scale, config.relocalize_min_inliers, tracker, current);
@@ -539,7 +539,7 @@ void VisualSlam::addLidarPose(double t, const Eigen::Isometry3d& T_odom_camera) 
   if (!isRigidTransform(T_odom_camera))
     throw Error("VisualSlam::addLidarPose", "the pose at t=" + std::to_string(t) + " is not a rigid transform");
   Impl& s = *impl_;
-  if (!s.config.visual.use_lidar_pose_priors) return;
+  if (!s.config.modules.use_lidar_pose_priors) return;
   s.lidar_poses.push_back({t, T_odom_camera});
   if (s.lidar_poses.size() > s.config.lidar_pose_buffer) s.lidar_poses.pop_front();
   s.attachLidarPoses();
@@ -558,7 +558,7 @@ void VisualSlam::setKeypointDepths(const std::vector<double>& depths) {
                                                      std::to_string(keypoints) + " keypoints of the current frame");
   }
   Impl& s = *impl_;
-  if (!currentIsKeyframe() || !s.config.visual.use_keypoint_depths) return;
+  if (!currentIsKeyframe() || !s.config.modules.use_keypoint_depths) return;
   s.map.setKeypointDepths(s.current_keyframe, depths);
   // The mapper has triangulated this keyframe already: the keypoints still
   // without a landmark get one from their depth.

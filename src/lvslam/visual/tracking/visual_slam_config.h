@@ -13,7 +13,7 @@
 namespace lvslam::visual {
 
 struct VisualSlamConfig {
-  VisualConfig visual;
+  VisualConfig modules;  // the tracking and mapping modules' settings
   ImageUsabilityConfig usability;
   int min_keypoints = 100;  // fewer: the frame is not usable (featureless, blurred)
   // Initialisation (ORB-SLAM): matches reference -> current in a window.
