@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -152,6 +154,38 @@ TEST(LidarWorker, AFrameIsPosedInItsSweepThenInterpolatedBetweenThatSweepAndTheN
     EXPECT_LT((calls[1].record.T_odom_lidar->matrix() - expected.matrix()).norm(), 1e-12) << "frame at " << t;
     expectPosedAt(run, calls[1], t);
   }
+}
+
+// A frame's first pose is its sweep's registered pose moved on by the
+// sweep's motion, so it carries the velocity's error over the time moved
+// besides the registration's: it states less information than that
+// registration (the frames the same registration interpolates state all of
+// it), and less the farther it lies from the registered middle of the sweep.
+TEST(LidarWorker, APoseMovedOnFromItsSweepStatesTheVelocitysErrorToo) {
+  const WorkerRun run = runWorker(6, {});
+  std::vector<std::pair<double, Matrix6d>> registration_information;  // from the interpolated poses
+  for (std::size_t i = 0; i < run.frame_times.size(); ++i) {
+    const std::vector<Call> calls = callsFor(run, i);
+    if (calls.size() == 2) registration_information.push_back({calls[1].registered, calls[1].record.information});
+  }
+  int compared = 0;
+  for (std::size_t i = 0; i < run.frame_times.size(); ++i) {
+    const Call first = callsFor(run, i).front();
+    for (const auto& [registered, information] : registration_information) {
+      if (std::abs(registered - first.registered) > 1e-9) continue;
+      const Eigen::SelfAdjointEigenSolver<Matrix6d> less(information - first.record.information);
+      EXPECT_GT(less.eigenvalues().minCoeff(), -1e-9 * information.trace()) << "frame at " << run.frame_times[i];
+      EXPECT_LT(first.record.information.trace(), information.trace()) << "frame at " << run.frame_times[i];
+      ++compared;
+      break;
+    }
+  }
+  EXPECT_GE(compared, 6);
+  // The first sweep's frames (0.03 and 0.07 s) are moved back from the
+  // second sweep's middle (about 0.15 s): the earlier one farther.
+  const Matrix6d earlier = callsFor(run, 0).front().record.information;
+  const Matrix6d later = callsFor(run, 1).front().record.information;
+  EXPECT_LT(earlier.trace(), later.trace());
 }
 
 TEST(LidarWorker, FramesNoSweepCoversAreInterpolatedAcrossTheGapAndMarkedUnreliable) {

@@ -212,6 +212,11 @@ Eigen::Isometry3d LidarOdometry::poseAt(double t) const {
   return current_.T_world_lidar * motionOver(motion_.velocity, t - current_.timestamp);
 }
 
+Matrix6d LidarOdometry::motionCovarianceAt(double t) const {
+  const double dt = t - (current_.timestamp + mid_offset_);
+  return dt * dt * motion_.covariance;
+}
+
 std::size_t LidarOdometry::setLinearDirections(std::span<const FeatureId> ids, const Eigen::Vector3d& direction_world) {
   if (!direction_world.allFinite() || direction_world.norm() < 1e-9)
     throw Error("LidarOdometry::setLinearDirections", "the direction must be finite and non-zero");

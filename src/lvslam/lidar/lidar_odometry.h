@@ -65,6 +65,10 @@ class LidarOdometry {
   // Pose of the LiDAR at time t by the current motion estimate (constant
   // velocity around the current frame).
   Eigen::Isometry3d poseAt(double t) const;
+  // What the constant velocity adds to poseAt(t)'s covariance (body frame,
+  // (rho, phi)): the velocity's own covariance over the time from the
+  // registered middle of the sweep, squared.
+  Matrix6d motionCovarianceAt(double t) const;
 
   // Gives the linear (pillar / beam) points named by ids, of the current or a
   // recent frame, the direction (world frame) and marks them refined; the

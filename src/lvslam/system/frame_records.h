@@ -59,7 +59,9 @@ struct LidarFrameRecord {
   std::optional<Eigen::Isometry3d> T_odom_lidar;  // after the scan around t was registered
   bool pose_reliable = false;  // interpolated between two scans registered without loss
   // Of T_odom_lidar: the information of the later of those scans' registration
-  // (lidar::OdometryResult::information, body-frame perturbation).
+  // (lidar::OdometryResult::information, body-frame perturbation); of a pose
+  // moved on from its sweep by the sweep's motion, less by the velocity's
+  // error over the time moved (lidar::LidarOdometry::motionCovarianceAt).
   Matrix6d information = Matrix6d::Zero();
   // That scan's registration was blind along some direction (held at the
   // prediction there): it did not hold the odometry to its map.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lvslam/core/se3.h"
+#include "lvslam/system/online/pose_information.h"
 #include "lvslam/system/stopwatch.h"
 
 namespace lvslam::system {
@@ -134,11 +135,19 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable, bool prior_
   if (scan_trajectory_.empty()) return;
   const StampedPose& last = scan_trajectory_.back();
   const double sweep = scan_trajectory_.size() >= 2 ? last.t - scan_trajectory_[scan_trajectory_.size() - 2].t : 0.0;
-  const auto pose = [&](std::size_t index, const Eigen::Isometry3d& T_odom_lidar, bool measured = true) {
+  // A pose moved on from the sweep by its motion carries the velocity's
+  // error over the time moved as well as the registration's.
+  const auto moved = [&](double t) {
+    const PseudoInverse seen = pseudoInverse(last_information_);
+    if (seen.rank == 0) return Matrix6d(Matrix6d::Zero());
+    return informationOn(seen.range, seen.inverse + odometry_.motionCovarianceAt(t));
+  };
+  const auto pose = [&](std::size_t index, const Eigen::Isometry3d& T_odom_lidar, bool measured = true,
+                        const std::optional<Matrix6d>& information = std::nullopt) {
     LidarFrameRecord& frame = openFrame(index);
     frame.T_odom_lidar = T_odom_lidar;
     frame.pose_reliable = reliable && measured;
-    frame.information = last_information_;
+    frame.information = information ? *information : last_information_;
     frame.degenerate = last_degenerate_;
     frame.registration = scan_trajectory_.size();
     if (on_frame_posed_) on_frame_posed_(index, frame);
@@ -166,10 +175,10 @@ void LidarWorker::poseWaitingFrames(bool extrapolate, bool reliable, bool prior_
       const StampedPose& before = scan_trajectory_[scan_trajectory_.size() - 2];
       pose(index, interpolateAtTime(t, before.t, before.T_world_frame, last.t, last.T_world_frame), false);
     } else if (t <= last.t + sweep && sweep > 0.0) {
-      pose(index, odometry_.poseAt(t));
+      pose(index, odometry_.poseAt(t), true, moved(t));
       frames_provisional_.push_back(index);
     } else if (extrapolate) {  // only at the end, where `reliable` is false
-      pose(index, odometry_.poseAt(t));
+      pose(index, odometry_.poseAt(t), true, moved(t));
     } else {
       still_waiting.push_back(index);
     }
