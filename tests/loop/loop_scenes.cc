@@ -1,5 +1,6 @@
 #include "loop/loop_scenes.h"
 
+#include "lvslam/lidar/deskew.h"
 #include "lvslam/lidar/feature_extraction.h"
 #include "lvslam/lidar/lidar_config.h"
 #include "lvslam/lidar/preprocess.h"
@@ -23,6 +24,17 @@ std::vector<lidar::FeaturePoint> keyframeFeatures(const SyntheticScene& scene, c
   sensor.columns = 1024;
   const LidarScan scan = castScan(scene, [&](double) { return T_world_lidar; }, 0.0, sensor);
   return lidar::extractFeatures(lidar::cropAndDownsample(scan, config.preprocess, config.features.neighbour_radius), config.ground, config.features);
+}
+
+std::vector<lidar::FeaturePoint> keyframeFeatures(const sim::Scenario& scenario, const sim::LidarSimulator& lidar,
+                                                  double t) {
+  const lidar::LidarOdometryConfig config;
+  const double sweep = lidar.sweepDuration();
+  std::vector<lidar::TimedPoint> points =
+      lidar::cropAndDownsample(lidar.scanLidar(t), config.preprocess, config.features.neighbour_radius);
+  lidar::deskewToReference(points, lidar::velocityBetween(scenario.T_world_lidar(t), t,
+                                                          scenario.T_world_lidar(t + sweep), t + sweep));
+  return lidar::extractFeatures(points, config.ground, config.features);
 }
 
 std::vector<Eigen::Vector3f> positionsOf(const std::vector<lidar::FeaturePoint>& points) {

@@ -8,6 +8,8 @@
 
 #include "lidar/synthetic_lidar.h"
 #include "lvslam/lidar/feature_point.h"
+#include "lvslam/sim/lidar_simulator.h"
+#include "lvslam/sim/scenario.h"
 
 namespace lvslam::testing {
 
@@ -16,6 +18,11 @@ SyntheticScene storeRoom();
 
 // The LiDAR features of a static scan from T_world_lidar (LiDAR frame).
 std::vector<lidar::FeaturePoint> keyframeFeatures(const SyntheticScene& scene, const Eigen::Isometry3d& T_world_lidar);
+
+// The LiDAR subsystem's keyframe features of the simulator's sweep that
+// starts at t, deskewed with the true motion over it.
+std::vector<lidar::FeaturePoint> keyframeFeatures(const sim::Scenario& scenario, const sim::LidarSimulator& lidar,
+                                                  double t);
 
 std::vector<Eigen::Vector3f> positionsOf(const std::vector<lidar::FeaturePoint>& points);
 

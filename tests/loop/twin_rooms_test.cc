@@ -5,30 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include "loop/loop_scenes.h"
 #include "lvslam/core/se3.h"
-#include "lvslam/lidar/deskew.h"
-#include "lvslam/lidar/feature_extraction.h"
-#include "lvslam/lidar/lidar_config.h"
-#include "lvslam/lidar/preprocess.h"
 #include "lvslam/loop/loop_closure.h"
 #include "lvslam/sim/lidar_simulator.h"
 #include "lvslam/sim/scenario.h"
 
 namespace lvslam::loop {
 namespace {
-
-// The LiDAR subsystem's keyframe features of the sweep that starts at t,
-// deskewed with the true motion over it.
-std::vector<lidar::FeaturePoint> keyframeFeatures(const sim::Scenario& scenario, const sim::LidarSimulator& lidar,
-                                                  double t) {
-  const lidar::LidarOdometryConfig config;
-  const double sweep = lidar.sweepDuration();
-  std::vector<lidar::TimedPoint> points =
-      lidar::cropAndDownsample(lidar.scanLidar(t), config.preprocess, config.features.neighbour_radius);
-  lidar::deskewToReference(points, lidar::velocityBetween(scenario.T_world_lidar(t), t,
-                                                          scenario.T_world_lidar(t + sweep), t + sweep));
-  return lidar::extractFeatures(points, config.ground, config.features);
-}
 
 double truthDistance(const sim::Scenario& scenario, const LoopCandidateRecord& c, double t0) {
   return (scenario.T_world_lidar(c.query_t - t0).translation() - scenario.T_world_lidar(c.candidate_t - t0).translation())
@@ -58,7 +42,7 @@ TEST(TwinRooms, TheSecondRoomRegistersAsTheFirstAndTheOdometryRefusesIt) {
     if (t > 0.0 && (T_world_lidar.translation() - last).norm() < 1.0) continue;
     path += (T_world_lidar.translation() - last).norm();
     last = T_world_lidar.translation();
-    closure.addKeyframe({t0 + t, odometry(T_world_lidar, path), keyframeFeatures(scenario, lidar, t), path});
+    closure.addKeyframe({t0 + t, odometry(T_world_lidar, path), testing::keyframeFeatures(scenario, lidar, t), path});
   }
   int twins_registered = 0, twins_accepted = 0, revisits_accepted = 0;
   for (const LoopCandidateRecord& c : closure.candidates()) {

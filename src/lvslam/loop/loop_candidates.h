@@ -15,8 +15,15 @@ struct LoopCandidate {
   ScanContextMatch match;
 };
 
-// database[i] with path_lengths[i]; the query is the last entry. None when
-// no keyframe lies `exclude_recent_path` metres of path behind the query.
+// database[i] with path_lengths[i]; the query is the last entry. The
+// `ring_key_candidates` keyframes nearest by ring key that lie at least
+// `exclude_recent_path` metres of path behind the query, compared whole,
+// best (smallest descriptor distance) first.
+std::vector<LoopCandidate> findLoopCandidates(const std::vector<ScanContext>& database,
+                                              const std::vector<double>& path_lengths, double exclude_recent_path,
+                                              int ring_key_candidates);
+
+// The best of them; none when no keyframe lies far enough behind.
 std::optional<LoopCandidate> findLoopCandidate(const std::vector<ScanContext>& database,
                                                const std::vector<double>& path_lengths, double exclude_recent_path,
                                                int ring_key_candidates);

@@ -29,21 +29,9 @@ std::vector<Eigen::Vector3f> positionsOf(const std::vector<lidar::FeaturePoint>&
   return p;
 }
 
-// A loop must agree with the odometry within the drift the graph allows it
-// over the path between the two keyframes (the odometry's own uncertainty,
-// as LIO-SAM searches candidates within a radius of the odometry's pose):
-// scenes with a symmetry or a repeated room register well in a wrong place.
 std::string offOdometry(const Eigen::Isometry3d& T_odom_from, const Eigen::Isometry3d& T_odom_to, double path,
                         const Eigen::Isometry3d& T_candidate_query, const LoopClosureConfig& config) {
-  const Eigen::Isometry3d offset = (T_odom_from.inverse() * T_odom_to).inverse() * T_candidate_query;
-  const double sqrt_path = std::sqrt(std::max(path, kMinEdgePath));
-  const double max_m = config.odometry_gate_sigmas * config.odometry_sigma_m * sqrt_path;
-  const double max_deg = config.odometry_gate_sigmas * config.odometry_sigma_deg * sqrt_path;
-  const double off_m = offset.translation().norm();
-  const double off_deg = rotationAngle(offset) / kDegree;
-  if (off_m <= max_m && off_deg <= max_deg) return "";
-  return fmt::format("off the odometry by {:.2f} m, {:.1f} deg (> {:.2f} m, {:.1f} deg)", off_m, off_deg, max_m,
-                     max_deg);
+  return offByDrift((T_odom_from.inverse() * T_odom_to).inverse() * T_candidate_query, path, config);
 }
 
 // The odometry's drift per sqrt(m) of path between keyframes to - 1 and to.
@@ -94,6 +82,21 @@ void solveGraph(LoopClosureResult& result, const LoopClosureConfig& config) {
 
 }  // namespace
 
+// A loop must agree with the odometry within the drift the graph allows it
+// over the path between the two keyframes (the odometry's own uncertainty,
+// as LIO-SAM searches candidates within a radius of the odometry's pose):
+// scenes with a symmetry or a repeated room register well in a wrong place.
+std::string offByDrift(const Eigen::Isometry3d& offset, double path, const LoopClosureConfig& config) {
+  const double sqrt_path = std::sqrt(std::max(path, kMinEdgePath));
+  const double max_m = config.odometry_gate_sigmas * config.odometry_sigma_m * sqrt_path;
+  const double max_deg = config.odometry_gate_sigmas * config.odometry_sigma_deg * sqrt_path;
+  const double off_m = offset.translation().norm();
+  const double off_deg = rotationAngle(offset) / kDegree;
+  if (off_m <= max_m && off_deg <= max_deg) return "";
+  return fmt::format("off the odometry by {:.2f} m, {:.1f} deg (> {:.2f} m, {:.1f} deg)", off_m, off_deg, max_m,
+                     max_deg);
+}
+
 std::size_t LoopClosureResult::accepted() const {
   return static_cast<std::size_t>(std::count_if(candidates.begin(), candidates.end(),
                                                 [](const LoopCandidateRecord& c) { return c.reason.empty(); }));
@@ -101,18 +104,6 @@ std::size_t LoopClosureResult::accepted() const {
 
 LoopClosure::LoopClosure(const LoopClosureConfig& config, const lidar::RegistrationConfig& registration)
     : config_(config), registration_(registration) {}
-
-std::vector<SubmapScan> LoopClosure::submapAround(int candidate) const {
-  const int first = std::max(0, candidate - config_.submap_keyframes);
-  const int last = std::min(static_cast<int>(keyframes_.size()) - 2, candidate + config_.submap_keyframes);
-  const Eigen::Isometry3d T_candidate_odom = keyframes_[static_cast<std::size_t>(candidate)].T_odom_lidar.inverse();
-  std::vector<SubmapScan> submap;
-  for (int k = first; k <= last; ++k) {
-    const LoopKeyframe& kf = keyframes_[static_cast<std::size_t>(k)];
-    submap.push_back({T_candidate_odom * kf.T_odom_lidar, &kf.points});
-  }
-  return submap;
-}
 
 bool LoopClosure::addKeyframe(LoopKeyframe keyframe) {
   descriptors_.push_back(makeScanContext(positionsOf(keyframe.points), config_.scan_context));
@@ -138,7 +129,9 @@ bool LoopClosure::addKeyframe(LoopKeyframe keyframe) {
   }
   record.verified = true;
   record.verification =
-      verifyLoop(keyframes_.back().points, submapAround(found->index), found->match.yaw, config_, registration_);
+      verifyLoop(keyframes_.back().points,
+                 submapAround(keyframes_, found->index, config_.submap_keyframes, static_cast<int>(keyframes_.size()) - 2),
+                 found->match.yaw, config_, registration_);
   const LoopKeyframe& from = keyframes_[static_cast<std::size_t>(found->index)];
   record.reason = record.verification.reason.empty()
                       ? offOdometry(from.T_odom_lidar, keyframes_.back().T_odom_lidar,

@@ -55,6 +55,11 @@ struct LoopClosureResult {
 LoopClosureResult regateWithOdometry(const LoopClosureResult& live, const std::vector<Eigen::Isometry3d>& T_odom_lidar,
                                      const std::string& odometry, const LoopClosureConfig& config);
 
+// Empty when `offset` (what a match says beyond what the odometry says)
+// lies within the odometry's drift over `path` metres (odometry_sigma_m and
+// _deg per root metre, times odometry_gate_sigmas), else why not.
+std::string offByDrift(const Eigen::Isometry3d& offset, double path, const LoopClosureConfig& config);
+
 class LoopClosure {
  public:
   LoopClosure(const LoopClosureConfig& config, const lidar::RegistrationConfig& registration);
@@ -65,11 +70,10 @@ class LoopClosure {
   LoopClosureResult solve() const;
 
   std::size_t keyframeCount() const { return keyframes_.size(); }
+  const std::vector<LoopKeyframe>& keyframes() const { return keyframes_; }
   const std::vector<LoopCandidateRecord>& candidates() const { return candidates_; }
 
  private:
-  std::vector<SubmapScan> submapAround(int candidate) const;
-
   LoopClosureConfig config_;
   lidar::RegistrationConfig registration_;
   std::vector<LoopKeyframe> keyframes_;

@@ -1,5 +1,6 @@
 #include "lvslam/loop/loop_verification.h"
 
+#include <algorithm>
 #include <array>
 
 #include <fmt/format.h>
@@ -29,6 +30,19 @@ lidar::LocalMap submapOf(const std::vector<SubmapScan>& submap, const lidar::Loc
 }
 
 }  // namespace
+
+std::vector<SubmapScan> submapAround(const std::vector<LoopKeyframe>& keyframes, int candidate, int neighbours,
+                                     int last) {
+  const int first = std::max(0, candidate - neighbours);
+  last = std::min(last, candidate + neighbours);
+  const Eigen::Isometry3d T_candidate_odom = keyframes[static_cast<std::size_t>(candidate)].T_odom_lidar.inverse();
+  std::vector<SubmapScan> submap;
+  for (int k = first; k <= last; ++k) {
+    const LoopKeyframe& kf = keyframes[static_cast<std::size_t>(k)];
+    submap.push_back({T_candidate_odom * kf.T_odom_lidar, &kf.points});
+  }
+  return submap;
+}
 
 LoopVerification verifyLoop(const std::vector<lidar::FeaturePoint>& query, const std::vector<SubmapScan>& submap,
                             double yaw, const LoopClosureConfig& config, const lidar::RegistrationConfig& registration) {

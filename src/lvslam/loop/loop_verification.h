@@ -13,6 +13,7 @@
 #include "lvslam/lidar/feature_point.h"
 #include "lvslam/lidar/lidar_config.h"
 #include "lvslam/loop/loop_config.h"
+#include "lvslam/loop/loop_keyframe.h"
 
 namespace lvslam::loop {
 
@@ -21,6 +22,12 @@ struct SubmapScan {
   Eigen::Isometry3d T_candidate_lidar = Eigen::Isometry3d::Identity();
   const std::vector<lidar::FeaturePoint>* points = nullptr;
 };
+
+// Keyframes [candidate - neighbours, candidate + neighbours] (within
+// [0, last]) placed in the candidate's LiDAR frame; they point into
+// `keyframes`, which must outlive the result.
+std::vector<SubmapScan> submapAround(const std::vector<LoopKeyframe>& keyframes, int candidate, int neighbours,
+                                     int last);
 
 struct LoopVerification {
   bool accepted = false;
