@@ -5,6 +5,8 @@
 // that cannot be read to its end is run up to the fault, its outputs
 // written, and the fault then ends the command (exit 2).
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -23,6 +25,7 @@
 #include "lvslam/system/frame_stats_stream.h"
 #include "lvslam/system/run_recording.h"
 #include "lvslam/system/output_folder.h"
+#include "lvslam/system/saved_map.h"
 
 namespace lvslam::apps {
 
@@ -37,6 +40,7 @@ struct RunArgs {
   bool realtime = false;
   bool mode_given = false;  // --mode on the command line
   std::vector<std::string> ablations;
+  std::string map_in, map_out;
 };
 
 // Without --mode the system runs what the recording allows: fused with both
@@ -73,12 +77,36 @@ std::string defaultSequence() {
   return dir;
 }
 
+// A saved map is the loop closure's LiDAR keyframes: saving or localising
+// needs both. The map file is read, and the file to save to checked, before
+// the run, so that a bad one is named now and not after the whole run.
+void prepareMaps(const RunArgs& args, system::SystemConfig& config) {
+  for (const auto& [option, file] : {std::pair{"--map-in", &args.map_in}, std::pair{"--map-out", &args.map_out}}) {
+    if (file->empty()) continue;
+    if (config.mode == system::RunMode::kVisual)
+      throw Error(option, "a saved map is made of LiDAR keyframes: it needs mode lidar or fused, not visual");
+    if (!config.loop.enabled) throw Error(option, "a saved map is the loop closure's keyframes: it needs loop.enabled: true");
+  }
+  if (!args.map_in.empty()) {
+    system::SavedMap map = system::readSavedMap(args.map_in);
+    if (map.keyframes.empty()) throw Error(args.map_in, "the map has no keyframe to localise in");
+    config.localize_in = std::make_shared<const std::vector<loop::LoopKeyframe>>(std::move(map.keyframes));
+  }
+  if (!args.map_out.empty()) {
+    const bool existed = std::filesystem::exists(args.map_out);
+    if (!std::ofstream(args.map_out, std::ios::app)) throw Error(args.map_out, "cannot write the map here");
+    if (!existed) std::filesystem::remove(args.map_out);
+    config.keep_loop_keyframes = true;
+  }
+}
+
 system::SystemConfig loadConfig(const RunArgs& args) {
   system::SystemConfig config = system::loadRunConfig(args.config_path);
   config.mode = system::parseRunMode(args.mode, "--mode");
   config.deterministic = args.deterministic;
   config.realtime = args.realtime;
   for (const std::string& name : args.ablations) system::applyAblation(config, name, "--ablate");
+  prepareMaps(args, config);
   return config;
 }
 
@@ -114,6 +142,13 @@ int runRun(RunArgs args) {
   online_poses.reset();
   frame_stats.reset();
   progress.finish();
+  if (!args.map_out.empty() && !run.output.trajectory.empty()) {
+    const system::SavedMap map =
+        system::savedMapOf(std::move(run.records.loop_keyframes), run.output.loop, run.output.lines_world);
+    system::writeSavedMap(args.map_out, map);
+    std::cout << fmt::format("wrote the map {} ({} keyframes, {} lines)\n", args.map_out, map.keyframes.size(),
+                             map.lines.size());
+  }
   finishRunFolder(args.out_dir, recording, std::move(run), args.mode, args.deterministic);
   return 0;
 }
@@ -148,6 +183,12 @@ void addRunCommand(CLI::App& app, CommandAction& action) {
                   "Switch off one of the paper's contributions (repeatable): direction-residual, "
                   "lidar-direction-refinement, fusion-lines")
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(system::kAblations), std::end(system::kAblations))));
+  cmd->add_option("--map-in", args->map_in,
+                  "A map saved by an earlier run (--map-out) to localise this run in: its place found by the LiDAR "
+                  "keyframes; writes OUT/trajectory_in_map.tum once localised (modes lidar and fused)");
+  cmd->add_option("--map-out", args->map_out,
+                  "Save this run's map (LiDAR keyframes at their final poses with their features, and the lines) "
+                  "to FILE, for a later run's --map-in");
   cmd->add_flag("--realtime", args->realtime,
                 "Read the recording at the pace of its time stamps, as a live robot delivers it (the online "
                 "output's latency as live); without it the run goes as fast as the machine does");

@@ -75,6 +75,39 @@ TEST(Cli, ScanOfTheWrongSizeNamesTheScanFile) {
   EXPECT_NE(r.err.find("000000.bin"), std::string::npos) << r.err;
 }
 
+// Exit code 2 and one stderr line holding `text`.
+void expectOneLineError(const RunResult& r, const std::string& text) {
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(text), std::string::npos) << r.err;
+}
+
+// A LiDAR-only sequence of one scan of ten points: enough to reach the options' checks.
+void writeOneScanSequence(TempDir& dir) {
+  dir.write("seq/sequence.yaml", "format: lvslam-sequence/1\nlidar:\n  point_fields: [x, y, z, intensity]\n");
+  dir.write("seq/lidar/times.txt", "0.0 000000.bin\n");
+  dir.write("seq/lidar/000000.bin", std::string(4 * 4 * 10, '\0'));
+}
+
+TEST(Cli, AMapInThatIsNotAMapIsOneLineNamingIt) {
+  TempDir dir;
+  writeOneScanSequence(dir);
+  dir.write("room.lvmap", "ply\nformat ascii 1.0\n");
+  expectOneLineError(runLvslam(dir, "run --sequence seq --mode lidar --out out --map-in room.lvmap"),
+                     "room.lvmap: not an lvslam map");
+}
+
+TEST(Cli, AMapOutWithoutLoopClosureOrNowhereToWriteIsOneLineBeforeTheRun) {
+  TempDir dir;
+  writeOneScanSequence(dir);
+  dir.write("no_loops.yaml", "loop:\n  enabled: false\n");
+  expectOneLineError(
+      runLvslam(dir, "run --sequence seq --mode lidar --out out --config no_loops.yaml --map-out m.lvmap"),
+      "--map-out: a saved map is the loop closure's keyframes: it needs loop.enabled: true");
+  expectOneLineError(runLvslam(dir, "run --sequence seq --mode lidar --out out --map-out missing/m.lvmap"),
+                     "missing/m.lvmap: cannot write the map here");
+}
+
 TEST(Cli, UnsortedTimesNameTheLine) {
   TempDir dir;
   dir.write("seq/sequence.yaml", "format: lvslam-sequence/1\nlidar:\n  point_fields: [x, y, z]\n");

@@ -7,6 +7,7 @@
 // between the two keyframes. Single
 // threaded and deterministic: the order of keyframes fixes every figure
 // (system/ runs it on its own thread).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "lvslam/loop/loop_config.h"
 #include "lvslam/loop/loop_keyframe.h"
 #include "lvslam/loop/loop_verification.h"
+#include "lvslam/loop/map_localizer.h"
 #include "lvslam/loop/scan_context.h"
 
 namespace lvslam::loop {
@@ -44,6 +46,9 @@ struct LoopClosureResult {
   // made them) or "fused" (regateWithOdometry on the fused trajectory).
   std::string odometry = "lidar";
   bool solved = false;
+  // With a saved map to localise in (--map-in): the run's keyframes tried
+  // against it, and where the run's odometry frame sits in the map's.
+  std::optional<MapLocalization> map_localization;
   std::size_t accepted() const;
 };
 
@@ -70,7 +75,8 @@ class LoopClosure {
   LoopClosureResult solve() const;
 
   std::size_t keyframeCount() const { return keyframes_.size(); }
-  const std::vector<LoopKeyframe>& keyframes() const { return keyframes_; }
+  // Moves the keyframes out: call after the last solve().
+  std::vector<LoopKeyframe> takeKeyframes() { return std::move(keyframes_); }
   const std::vector<LoopCandidateRecord>& candidates() const { return candidates_; }
 
  private:

@@ -14,7 +14,8 @@ LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibrat
       keypoint_depth_radius_px_(config.keypoint_depth_radius_px),
       keypoint_depths_from_features_(config.keypoint_depth_source == KeypointDepthSource::kFeatures &&
                                      config.visual.modules.use_keypoint_depths),
-      map_(config.map_voxel) {
+      map_(config.map_voxel),
+      keep_loop_keyframes_(config.keep_loop_keyframes) {
   if (config.mode == RunMode::kFused && calibration.camera) {
     fusion_.emplace(*calibration.camera, calibration.T_camera_lidar, config.fusion);
     fusion_->setLidarFeedback(config.lidar_direction_refinement);
@@ -24,7 +25,8 @@ LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibrat
   }
   if (config.loop.enabled) {
     keyframe_selector_.emplace(config.loop.keyframe_distance, config.loop.keyframe_angle_deg * M_PI / 180.0);
-    loop_closure_ = std::make_unique<LoopClosureWorker>(config.loop, config.lidar.registration, !config.deterministic);
+    loop_closure_ = std::make_unique<LoopClosureWorker>(config.loop, config.lidar.registration, !config.deterministic,
+                                                        config.localize_in.get());
   }
 }
 
@@ -38,6 +40,10 @@ void LidarWorker::offerKeyframe(const lidar::OdometryResult& result) {
 std::optional<loop::LoopClosureResult> LidarWorker::finishLoopClosure() {
   if (!loop_closure_) return std::nullopt;
   return loop_closure_->finish();
+}
+
+std::vector<loop::LoopKeyframe> LidarWorker::takeLoopKeyframes() {
+  return loop_closure_ && keep_loop_keyframes_ ? loop_closure_->takeKeyframes() : std::vector<loop::LoopKeyframe>{};
 }
 
 void LidarWorker::addScan(const LidarScan& scan) {

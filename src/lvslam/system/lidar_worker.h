@@ -66,6 +66,9 @@ class LidarWorker {
   // finish(), its result (none when off), and per keyframe the index of the
   // first map() point added from its scan on.
   std::optional<loop::LoopClosureResult> finishLoopClosure();
+  // The loop closure's keyframes, moved out after finishLoopClosure(), when
+  // the configuration keeps them (keep_loop_keyframes); else none.
+  std::vector<loop::LoopKeyframe> takeLoopKeyframes();
   const std::vector<std::size_t>& mapKeyframeStarts() const { return map_keyframe_starts_; }
   // The extrinsic check's verdict per window of frames (fused mode).
   const std::vector<fusion::ExtrinsicVerdict>& extrinsicVerdicts() const { return extrinsic_verdicts_; }
@@ -111,6 +114,7 @@ class LidarWorker {
   Trajectory scan_trajectory_;
   std::optional<loop::KeyframeSelector> keyframe_selector_;
   std::unique_ptr<LoopClosureWorker> loop_closure_;
+  bool keep_loop_keyframes_ = false;
   std::vector<std::size_t> map_keyframe_starts_;
 };
 

@@ -35,7 +35,8 @@ void prepareOutputFolder(const std::string& out_dir) {
   if (::access(out_dir.c_str(), W_OK) != 0)
     throw Error(out_dir, std::string("cannot write in the output folder: ") + std::strerror(errno));
   for (const char* name :
-       {"trajectory.tum", "trajectory_refined.tum", "stats.json", "stats_frames.jsonl", "map.ply", "lines.ply"})
+       {"trajectory.tum", "trajectory_refined.tum", "trajectory_in_map.tum", "stats.json", "stats_frames.jsonl",
+        "map.ply", "lines.ply"})
     removeFile(dir / name);
   const fs::path own = dir / "subsystems";
   if (!fs::is_directory(own, ec)) return;

@@ -108,6 +108,13 @@ SavedMap mapOf(const MapPayload& payload, const std::string& path) {
 
 }  // namespace
 
+SavedMap savedMapOf(std::vector<loop::LoopKeyframe> keyframes, const std::optional<loop::LoopClosureResult>& loop,
+                    std::vector<PlySegment> lines) {
+  if (loop && loop->solved && loop->T_odom_lidar_corrected.size() == keyframes.size())
+    for (std::size_t k = 0; k < keyframes.size(); ++k) keyframes[k].T_odom_lidar = loop->T_odom_lidar_corrected[k];
+  return {std::move(keyframes), std::move(lines)};
+}
+
 void writeSavedMap(const std::string& path, const SavedMap& map) {
   RecordWriter writer;
   writer(payloadOf(map));

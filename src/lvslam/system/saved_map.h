@@ -10,10 +10,12 @@
 // can (feature class, flags, finite values, rotations), so a damaged or
 // foreign file is an lvslam::Error naming it, never a wrong map.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "lvslam/io/ply_writer.h"
+#include "lvslam/loop/loop_closure.h"
 #include "lvslam/loop/loop_keyframe.h"
 
 namespace lvslam::system {
@@ -24,6 +26,12 @@ struct SavedMap {
   std::vector<loop::LoopKeyframe> keyframes;  // T_odom_lidar: the keyframe's pose in the map's frame
   std::vector<PlySegment> lines;              // lines.ply's segments, same frame
 };
+
+// The map of a finished run: the loop closure's keyframes (odometry poses
+// and features) at the poses its final graph gave them (`loop`, when it
+// solved over the same keyframes), and the run's lines.
+SavedMap savedMapOf(std::vector<loop::LoopKeyframe> keyframes, const std::optional<loop::LoopClosureResult>& loop,
+                    std::vector<PlySegment> lines);
 
 // Throws lvslam::Error naming the file when it cannot be written.
 void writeSavedMap(const std::string& path, const SavedMap& map);

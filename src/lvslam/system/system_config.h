@@ -5,13 +5,16 @@
 // of YAML files, each section a table of keys (configKeys); absent keys keep
 // their value, unknown keys and unworkable values are lvslam::Errors naming
 // the file and the key. config/advanced.yaml shows every key with its default.
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "lvslam/core/config_keys.h"
 #include "lvslam/core/yaml_config.h"
 #include "lvslam/fusion/fusion_config.h"
 #include "lvslam/lidar/lidar_config.h"
 #include "lvslam/loop/loop_config.h"
+#include "lvslam/loop/loop_keyframe.h"
 #include "lvslam/system/detection/detection_module.h"
 #include "lvslam/system/online/fused_estimator.h"
 #include "lvslam/visual/tracking/visual_slam_config.h"
@@ -70,6 +73,11 @@ struct SystemConfig {
   // Read the recording at the pace of its own time stamps, as a live robot
   // delivers it (latency as live; otherwise as fast as the system goes).
   bool realtime = false;
+  // A saved map's keyframes to localise the run in (--map-in; never a file
+  // key): the loop closure's thread tries each keyframe of the run against them.
+  std::shared_ptr<const std::vector<loop::LoopKeyframe>> localize_in;
+  // The records keep the loop closure's keyframes for a saved map (--map-out).
+  bool keep_loop_keyframes = false;
 };
 
 // Whether the offline refinement optimises visual frames again in their

@@ -234,6 +234,7 @@ PipelineRecords collect(Workers& workers, OnlineStage& stage, bool relocate, Pip
     records.T_odom_lidar_scans = workers.lidar->scanTrajectory();
     records.lidar_map = workers.lidar->map().points();
     records.loop = workers.lidar->finishLoopClosure();
+    records.loop_keyframes = workers.lidar->takeLoopKeyframes();
     records.lidar_map_keyframe_starts = workers.lidar->mapKeyframeStarts();
     records.extrinsic_checks = workers.lidar->extrinsicVerdicts();
   }

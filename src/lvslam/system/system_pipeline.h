@@ -45,6 +45,7 @@ struct PipelineRecords {
   // Loop closure over the LiDAR keyframes (loop.enabled, lidar and fused
   // modes), and per keyframe the first lidar_map point added from its scan on.
   std::optional<loop::LoopClosureResult> loop;
+  std::vector<loop::LoopKeyframe> loop_keyframes;  // their odometry poses and features (a saved map's)
   std::vector<std::size_t> lidar_map_keyframe_starts;
   std::vector<MapLine> visual_lines;      // the lines of every visual map, old and current
   // Fused mode: the extrinsic check's verdict per window of frames.

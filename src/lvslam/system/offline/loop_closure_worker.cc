@@ -3,8 +3,10 @@
 namespace lvslam::system {
 
 LoopClosureWorker::LoopClosureWorker(const loop::LoopClosureConfig& config,
-                                     const lidar::RegistrationConfig& registration, bool threaded)
+                                     const lidar::RegistrationConfig& registration, bool threaded,
+                                     const std::vector<loop::LoopKeyframe>* map)
     : closure_(config, registration) {
+  if (map) localizer_.emplace(*map, config, registration);
   if (threaded) thread_ = std::thread([this] { run(); });
 }
 
@@ -29,6 +31,7 @@ void LoopClosureWorker::add(loop::LoopKeyframe keyframe) {
 // The live graph after an accepted loop: what a live system would show; the
 // result of the run is the final solve of finish().
 void LoopClosureWorker::process(loop::LoopKeyframe keyframe) {
+  if (localizer_) localizer_->addKeyframe(keyframe);
   if (!closure_.addKeyframe(std::move(keyframe)) || !thread_.joinable()) return;
   loop::LoopClosureResult live = closure_.solve();
   const std::lock_guard lock(mutex_);
@@ -79,7 +82,11 @@ loop::LoopClosureResult LoopClosureWorker::finish() {
     process(std::move(queue_.front()));
     queue_.pop_front();
   }
-  return closure_.solve();
+  loop::LoopClosureResult result = closure_.solve();
+  if (localizer_) result.map_localization = localizer_->result();
+  return result;
 }
+
+std::vector<loop::LoopKeyframe> LoopClosureWorker::takeKeyframes() { return closure_.takeKeyframes(); }
 
 }  // namespace lvslam::system

@@ -10,6 +10,8 @@
 #include <deque>
 #include <exception>
 #include <mutex>
+#include <optional>
+#include <vector>
 #include <thread>
 
 #include "lvslam/loop/loop_closure.h"
@@ -18,8 +20,9 @@ namespace lvslam::system {
 
 class LoopClosureWorker {
  public:
+  // `map`: a saved map's keyframes to localise the run in as well (--map-in), or none.
   LoopClosureWorker(const loop::LoopClosureConfig& config, const lidar::RegistrationConfig& registration,
-                    bool threaded);
+                    bool threaded, const std::vector<loop::LoopKeyframe>* map = nullptr);
   ~LoopClosureWorker();
   LoopClosureWorker(const LoopClosureWorker&) = delete;
   LoopClosureWorker& operator=(const LoopClosureWorker&) = delete;
@@ -29,6 +32,9 @@ class LoopClosureWorker {
   // Every keyframe processed, the graph solved; rethrows an error of the
   // worker's thread. Call once.
   loop::LoopClosureResult finish();
+  // The run's keyframes (their odometry poses and features), moved out
+  // after finish(): what a saved map is made of.
+  std::vector<loop::LoopKeyframe> takeKeyframes();
 
   // The graph as last solved on the worker's thread (after an accepted
   // loop; empty before): what a live consumer of the map would read.
@@ -40,6 +46,7 @@ class LoopClosureWorker {
   void process(loop::LoopKeyframe keyframe);
 
   loop::LoopClosure closure_;
+  std::optional<loop::MapLocalizer> localizer_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<loop::LoopKeyframe> queue_;

@@ -12,5 +12,7 @@ namespace lvslam::system {
 std::string loopJson(const loop::LoopClosureResult& result);
 // `applied`: as the output applied it (SystemOutput::loop); `live`: as the run made it.
 std::string formatLoopSummary(const loop::LoopClosureResult& applied, const loop::LoopClosureResult& live);
+// One line: where the run sits in the saved map (--map-in), or that it does not.
+std::string formatMapLocalization(const loop::MapLocalization& localization);
 
 }  // namespace lvslam::system
