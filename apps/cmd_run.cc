@@ -5,8 +5,9 @@
 // that cannot be read to its end is run up to the fault, its outputs
 // written, and the fault then ends the command (exit 2).
 #include <chrono>
+#include <unistd.h>
+
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -80,24 +81,45 @@ std::string defaultSequence() {
 // A saved map is the loop closure's LiDAR keyframes: saving or localising
 // needs both. The map file is read, and the file to save to checked, before
 // the run, so that a bad one is named now and not after the whole run.
-void prepareMaps(const RunArgs& args, system::SystemConfig& config) {
-  for (const auto& [option, file] : {std::pair{"--map-in", &args.map_in}, std::pair{"--map-out", &args.map_out}}) {
-    if (file->empty()) continue;
-    if (config.mode == system::RunMode::kVisual)
+void checkMapsMode(const RunArgs& args, const system::SystemConfig& config) {
+  for (const auto& [option, file] : {std::pair{"--map-in", &args.map_in}, std::pair{"--map-out", &args.map_out}})
+    if (!file->empty() && config.mode == system::RunMode::kVisual)
       throw Error(option, "a saved map is made of LiDAR keyframes: it needs mode lidar or fused, not visual");
-    if (!config.loop.enabled) throw Error(option, "a saved map is the loop closure's keyframes: it needs loop.enabled: true");
-  }
+}
+
+void prepareMaps(const RunArgs& args, system::SystemConfig& config) {
+  for (const auto& [option, file] : {std::pair{"--map-in", &args.map_in}, std::pair{"--map-out", &args.map_out}})
+    if (!file->empty() && !config.loop.enabled)
+      throw Error(option, "a saved map is the loop closure's keyframes: it needs loop.enabled: true");
   if (!args.map_in.empty()) {
     system::SavedMap map = system::readSavedMap(args.map_in);
     if (map.keyframes.empty()) throw Error(args.map_in, "the map has no keyframe to localise in");
     config.localize_in = std::make_shared<const std::vector<loop::LoopKeyframe>>(std::move(map.keyframes));
   }
   if (!args.map_out.empty()) {
-    const bool existed = std::filesystem::exists(args.map_out);
-    if (!std::ofstream(args.map_out, std::ios::app)) throw Error(args.map_out, "cannot write the map here");
-    if (!existed) std::filesystem::remove(args.map_out);
+    // Its folder must take a new file (the map is written beside and renamed
+    // over it), and what the name holds now must be a file, not a folder.
+    const std::filesystem::path file(args.map_out);
+    const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : ".";
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec) || ::access(folder.c_str(), W_OK | X_OK) != 0)
+      throw Error(args.map_out, "cannot write the map here: its folder is missing or not writable");
+    if (std::filesystem::is_directory(file, ec)) throw Error(args.map_out, "cannot write the map here: it is a folder");
     config.keep_loop_keyframes = true;
   }
+}
+
+// After the run folder is written (a map that cannot be written must not
+// cost the run's outputs); a run without a LiDAR keyframe has no map.
+void writeMapOut(const std::string& path, std::optional<system::SavedMap> map) {
+  if (!map) return;
+  if (map->keyframes.empty()) {
+    std::cerr << "lvslam: warning: --map-out: the run made no LiDAR keyframe, so no map was written to " << path << "\n";
+    return;
+  }
+  system::writeSavedMap(path, *map);
+  std::cout << fmt::format("wrote the map {} ({} keyframes, {} lines)\n", path, map->keyframes.size(),
+                           map->lines.size());
 }
 
 system::SystemConfig loadConfig(const RunArgs& args) {
@@ -113,9 +135,11 @@ system::SystemConfig loadConfig(const RunArgs& args) {
 int runRun(RunArgs args) {
   if (args.input.sequence_dir.empty() && args.input.bag_files.empty()) args.input.sequence_dir = defaultSequence();
   Recording recording = openRecording(args.input);
-  system::prepareOutputFolder(args.out_dir);  // no earlier run's files stay, whatever happens now
+  system::SystemConfig config = loadConfig(args);  // a bad option or file is named before --out is touched
+  system::prepareOutputFolder(args.out_dir);       // no earlier run's files stay, whatever happens now
   args.mode = modeFor(args, *recording.source);
-  const system::SystemConfig config = loadConfig(args);
+  config.mode = system::parseRunMode(args.mode, "--mode");
+  checkMapsMode(args, config);
   ProgressLine progress;
   const auto start = std::chrono::steady_clock::now();
   std::optional<double> t0;
@@ -142,14 +166,16 @@ int runRun(RunArgs args) {
   online_poses.reset();
   frame_stats.reset();
   progress.finish();
-  if (!args.map_out.empty() && !run.output.trajectory.empty()) {
-    const system::SavedMap map =
-        system::savedMapOf(std::move(run.records.loop_keyframes), run.output.loop, run.output.lines_world);
-    system::writeSavedMap(args.map_out, map);
-    std::cout << fmt::format("wrote the map {} ({} keyframes, {} lines)\n", args.map_out, map.keyframes.size(),
-                             map.lines.size());
+  std::optional<system::SavedMap> map;
+  if (!args.map_out.empty() && !run.output.trajectory.empty())
+    map = system::savedMapOf(std::move(run.records.loop_keyframes), run.output.loop, run.output.lines_world);
+  try {
+    finishRunFolder(args.out_dir, recording, std::move(run), args.mode, args.deterministic);
+  } catch (...) {  // a fault after the outputs were written: the map too, then the fault
+    writeMapOut(args.map_out, std::move(map));
+    throw;
   }
-  finishRunFolder(args.out_dir, recording, std::move(run), args.mode, args.deterministic);
+  writeMapOut(args.map_out, std::move(map));
   return 0;
 }
 

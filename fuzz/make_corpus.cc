@@ -19,6 +19,7 @@
 #include "lvslam/io/scan_file.h"
 #include "lvslam/io/sequence_info.h"
 #include "lvslam/io/tum.h"
+#include "lvslam/system/saved_map.h"
 
 namespace {
 
@@ -196,6 +197,35 @@ void writeRosSeeds(const fs::path& corpus) {
   }
 }
 
+// Saved maps (lvslam run --map-out): two keyframes of a few points and a
+// line; no keyframe at all.
+void writeSavedMapSeeds(const fs::path& corpus) {
+  lvslam::system::SavedMap map;
+  for (int k = 0; k < 2; ++k) {
+    lvslam::loop::LoopKeyframe keyframe;
+    keyframe.t = 1700000000.0 + k;
+    keyframe.path_length = 1.0 * k;
+    keyframe.T_odom_lidar.translation() = Eigen::Vector3d(1.0 * k, 0.5, 0.0);
+    for (int i = 0; i < 3; ++i) {
+      lvslam::lidar::FeaturePoint point;
+      point.p = Eigen::Vector3f(1.0f + i, -2.0f, 0.5f * i);
+      point.cls = static_cast<lvslam::lidar::FeatureClass>(i);
+      point.refined = i == 1;
+      keyframe.points.push_back(point);
+    }
+    map.keyframes.push_back(keyframe);
+  }
+  map.lines.push_back({Eigen::Vector3d(0.0, 0.0, 1.0), Eigen::Vector3d(1.0, 0.0, 1.0), 0, 255, 0});
+  // The harness's first byte: 0 makes the CRC match whatever follows, 1 keeps it as written.
+  const fs::path scratch = fs::temp_directory_path() / "lvslam-corpus.lvmap";
+  lvslam::system::writeSavedMap(scratch.string(), map);
+  writeBytes(corpus / "saved_map" / "two_keyframes.lvmap", std::string(1, '\0') + slurp(scratch));
+  writeBytes(corpus / "saved_map" / "two_keyframes_as_is.lvmap", std::string(1, '\1') + slurp(scratch));
+  lvslam::system::writeSavedMap(scratch.string(), {});
+  writeBytes(corpus / "saved_map" / "empty.lvmap", std::string(1, '\0') + slurp(scratch));
+  fs::remove(scratch);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -205,13 +235,15 @@ int main(int argc, char** argv) {
   }
   const fs::path corpus = argv[1];
   for (const char* name : {"sequence_yaml", "sensor_preset", "config_yaml", "times_file", "scan_file", "tum",
-                           "kitti_poses", "json", "ply", "pointcloud2", "png_image", "ros_image", "bag_records"})
+                           "kitti_poses", "json", "ply", "pointcloud2", "png_image", "ros_image", "bag_records",
+                           "saved_map"})
     fs::create_directories(corpus / name);
   writeYamlSeeds(corpus, argv[2]);
   writeTextSeeds(corpus);
   writeScanSeeds(corpus);
   writePlySeeds(corpus, fs::temp_directory_path());
   writeRosSeeds(corpus);
+  writeSavedMapSeeds(corpus);
   std::cout << "seed corpus written to " << corpus.string() << "\n";
   return 0;
 }

@@ -14,7 +14,7 @@ cd "$(dirname "$0")/.."
 
 seconds=${1:-60}
 [ $# -gt 0 ] && shift
-harnesses=(sequence_yaml sensor_preset config_yaml times_file scan_file tum kitti_poses png_image json ply
+harnesses=(sequence_yaml sensor_preset config_yaml times_file scan_file tum kitti_poses png_image json ply saved_map
            pointcloud2 bag_records ros_image)
 [ $# -gt 0 ] && harnesses=("$@")
 build=${LVSLAM_FUZZ_BUILD:-build-fuzz}

@@ -4,11 +4,13 @@
 #include "lvslam/system/saved_map.h"
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include "lvslam/core/error.h"
 #include "lvslam/core/se3.h"
@@ -98,6 +100,18 @@ std::string errorOn(const std::string& name, const std::string& bytes) {
   return "no error";
 }
 
+// The header: the 11-byte tag, the version (4), the payload's size (8) and CRC-32 (4).
+constexpr std::size_t kHeader = 11 + 4 + 8 + 4;
+
+// `bytes` with its header's CRC made to match the payload again: a value
+// damaged this way passes the checksum and must be caught by the checks.
+std::string withMatchingCrc(std::string bytes) {
+  const std::uint32_t crc = static_cast<std::uint32_t>(
+      crc32_z(0L, reinterpret_cast<const Bytef*>(bytes.data() + kHeader), bytes.size() - kHeader));
+  std::memcpy(bytes.data() + kHeader - 4, &crc, sizeof(crc));
+  return bytes;
+}
+
 TEST(SavedMap, AForeignNewerCutOrDamagedFileIsAnErrorNamingIt) {
   const std::string path = scratch("good.lvmap");
   writeSavedMap(path, someMap());
@@ -106,27 +120,34 @@ TEST(SavedMap, AForeignNewerCutOrDamagedFileIsAnErrorNamingIt) {
   EXPECT_NE(errorOn("ply.lvmap", "ply\nformat ascii 1.0\n").find("not an lvslam map"), std::string::npos);
   EXPECT_NE(errorOn("empty.lvmap", "").find("not an lvslam map"), std::string::npos);
   std::string newer = good;
-  newer[11] = 2;  // the version, after the 11-byte tag
+  newer[11] = 2;  // the version, after the tag
   EXPECT_NE(errorOn("newer.lvmap", newer).find("map format version 2; this lvslam reads version 1"), std::string::npos);
   EXPECT_NE(errorOn("header.lvmap", good.substr(0, 14)).find("cut short in its header"), std::string::npos);
   EXPECT_NE(errorOn("cut.lvmap", good.substr(0, good.size() - 9)).find("cut short or damaged"), std::string::npos);
-  // The first point's class byte: after the header (11 + 4 + 8), the
-  // keyframe count (8), the first keyframe's t, path (16) and pose (128),
-  // its point count (8) and the point's p, direction and time (28).
+  std::string flipped = good;
+  flipped[kHeader + 40] ^= 0x10;  // one bit of the first keyframe's pose
+  EXPECT_NE(errorOn("flipped.lvmap", flipped).find("checksum does not match"), std::string::npos);
+  // The first point's class byte: after the keyframe count (8), the first
+  // keyframe's t and path (16) and pose (128), its point count (8) and the
+  // point's p, direction and time (28).
+  const std::size_t cls = kHeader + 8 + 16 + 128 + 8 + 28;
+  ASSERT_EQ(good[cls], 0);
   std::string bad_class = good;
-  const std::size_t cls = 11 + 4 + 8 + 8 + 16 + 128 + 8 + 28;
-  ASSERT_EQ(bad_class[cls], 0);
   bad_class[cls] = 9;
-  EXPECT_NE(errorOn("class.lvmap", bad_class).find("class 9"), std::string::npos);
+  EXPECT_NE(errorOn("class.lvmap", withMatchingCrc(bad_class)).find("class 9"), std::string::npos);
   std::string bad_flag = good;
   bad_flag[cls + 1] = 7;
-  EXPECT_NE(errorOn("flag.lvmap", bad_flag).find("flag 7"), std::string::npos);
+  EXPECT_NE(errorOn("flag.lvmap", withMatchingCrc(bad_flag)).find("flag 7"), std::string::npos);
+  std::string far_point = good;
+  const float far = 3e8f;  // the first point's x: beyond any sensor's reach
+  std::memcpy(far_point.data() + cls - 28, &far, sizeof(far));
+  EXPECT_NE(errorOn("far.lvmap", withMatchingCrc(far_point)).find("out of range"), std::string::npos);
   std::string bad_pose = good;
-  bad_pose[11 + 4 + 8 + 8 + 16 + 7] = '\x7f';  // the first pose's first entry's top byte: no longer a rotation
-  EXPECT_NE(errorOn("pose.lvmap", bad_pose).find("not a finite rigid pose"), std::string::npos);
+  bad_pose[kHeader + 8 + 16 + 7] = '\x7f';  // the first pose's first entry's top byte: no longer a rotation
+  EXPECT_NE(errorOn("pose.lvmap", withMatchingCrc(bad_pose)).find("not a finite rigid pose"), std::string::npos);
   std::string huge_count = good;
-  huge_count[11 + 4 + 8 + 7] = '\x7f';  // the keyframe count's top byte
-  EXPECT_NE(errorOn("count.lvmap", huge_count).find("not a valid map"), std::string::npos);
+  huge_count[kHeader + 7] = '\x7f';  // the keyframe count's top byte
+  EXPECT_NE(errorOn("count.lvmap", withMatchingCrc(huge_count)).find("not a valid map"), std::string::npos);
 }
 
 TEST(SavedMap, AMissingFileOrFolderIsAnErrorNamingIt) {

@@ -20,23 +20,47 @@ std::vector<Eigen::Vector3f> positionsOf(const std::vector<lidar::FeaturePoint>&
 
 }  // namespace
 
-MapLocalizer::MapLocalizer(std::vector<LoopKeyframe> map, const LoopClosureConfig& config,
+MapLocalizer::MapLocalizer(std::shared_ptr<const std::vector<LoopKeyframe>> map, const LoopClosureConfig& config,
                            const lidar::RegistrationConfig& registration)
     : map_(std::move(map)), config_(config), registration_(registration) {
-  descriptors_.reserve(map_.size() + 1);
-  for (const LoopKeyframe& kf : map_) descriptors_.push_back(makeScanContext(positionsOf(kf.points), config_.scan_context));
+  descriptors_.reserve(map_->size() + 1);
+  for (const LoopKeyframe& kf : *map_)
+    descriptors_.push_back(makeScanContext(positionsOf(kf.points), config_.scan_context));
 }
 
 LoopVerification MapLocalizer::verifyAt(const LoopKeyframe& keyframe, const LoopCandidate& candidate) const {
   return verifyLoop(keyframe.points,
-                    submapAround(map_, candidate.index, config_.submap_keyframes, static_cast<int>(map_.size()) - 1),
+                    submapAround(*map_, candidate.index, config_.submap_keyframes, static_cast<int>(map_->size()) - 1),
                     candidate.match.yaw, config_, registration_);
+}
+
+// A map of several passes holds a place more than once at the same pose;
+// a twin room holds it at another. The next candidates outside the best
+// one's submap are verified in turn (a few at most): one at the same pose
+// is the same place, one elsewhere makes the scan ambiguous.
+std::string MapLocalizer::ambiguity(const LoopKeyframe& keyframe, const std::vector<LoopCandidate>& candidates,
+                                    const LoopCandidate& best, const Eigen::Isometry3d& T_map_query) const {
+  constexpr int kMaxAlternatives = 3;
+  int tried = 0;
+  for (const LoopCandidate& other : candidates) {
+    if (other.match.distance > config_.max_descriptor_distance || tried == kMaxAlternatives) break;
+    if (std::abs(other.index - best.index) <= config_.submap_keyframes) continue;
+    ++tried;
+    const LoopVerification alternative = verifyAt(keyframe, other);
+    if (!alternative.reason.empty()) continue;
+    const Eigen::Isometry3d T_map_alternative =
+        (*map_)[static_cast<std::size_t>(other.index)].T_odom_lidar * alternative.T_candidate_query;
+    const std::string off = offByDrift(T_map_query.inverse() * T_map_alternative, 0.0, config_);
+    if (!off.empty()) return fmt::format("ambiguous: map keyframe {} fits as well, {}", other.index, off);
+  }
+  return "";
 }
 
 void MapLocalizer::addKeyframe(const LoopKeyframe& keyframe) {
   const int query = static_cast<int>(query_paths_.size());
   query_paths_.push_back(keyframe.path_length);
-  if (map_.empty()) return;
+  query_poses_.push_back(keyframe.T_odom_lidar);
+  if (map_->empty()) return;
   // The map's keyframes and the query, every map keyframe a candidate.
   descriptors_.push_back(makeScanContext(positionsOf(keyframe.points), config_.scan_context));
   std::vector<double> paths(descriptors_.size(), 0.0);
@@ -65,54 +89,48 @@ void MapLocalizer::addKeyframe(const LoopKeyframe& keyframe) {
     return;
   }
   const Eigen::Isometry3d T_map_query =
-      map_[static_cast<std::size_t>(best.index)].T_odom_lidar * record.verification.T_candidate_query;
+      (*map_)[static_cast<std::size_t>(best.index)].T_odom_lidar * record.verification.T_candidate_query;
   record.T_map_odom = T_map_query * keyframe.T_odom_lidar.inverse();
-  // A place the map holds twice (the twin rooms) verifies at both: the next
-  // best candidate outside the first one's submap is verified too, and a
-  // second pose in the map for the same scan makes the match ambiguous.
-  for (const LoopCandidate& other : candidates) {
-    if (std::abs(other.index - best.index) <= config_.submap_keyframes) continue;
-    if (other.match.distance > config_.max_descriptor_distance) break;
-    const LoopVerification alternative = verifyAt(keyframe, other);
-    if (alternative.reason.empty()) {
-      const Eigen::Isometry3d T_map_alternative =
-          map_[static_cast<std::size_t>(other.index)].T_odom_lidar * alternative.T_candidate_query;
-      const std::string off = offByDrift(T_map_query.inverse() * T_map_alternative, 0.0, config_);
-      if (!off.empty()) record.reason = fmt::format("ambiguous: map keyframe {} fits as well, {}", other.index, off);
-    }
-    break;
-  }
-  if (!record.reason.empty()) {
-    result_.matches.push_back(std::move(record));
+  record.reason = ambiguity(keyframe, candidates, best, T_map_query);
+  const std::size_t index = result_.matches.size();
+  result_.matches.push_back(std::move(record));
+  if (!result_.matches[index].reason.empty()) return;
+  if (result_.T_map_odom) {
+    judge(index);
     return;
   }
-  // What this match says of the query's pose in the map, beyond what an
-  // earlier match and the odometry between the two say.
-  const auto offFrom = [&](const MapMatchRecord& earlier) {
-    const Eigen::Isometry3d offset = (earlier.T_map_odom * keyframe.T_odom_lidar).inverse() * T_map_query;
-    return offByDrift(offset, keyframe.path_length - query_paths_[static_cast<std::size_t>(earlier.query)], config_);
-  };
-  if (result_.T_map_odom) {
-    const std::string off = offFrom(result_.matches[verified_.front()]);
-    if (off.empty()) ++result_.agreeing;
-    record.reason = off.empty() ? "" : "disagrees with the localisation: " + off;
-  } else {
-    for (std::size_t i = 0; i < verified_.size() && !result_.T_map_odom; ++i) {
-      MapMatchRecord& earlier = result_.matches[verified_[i]];
-      if (!offFrom(earlier).empty()) continue;
-      // The earlier one becomes the first verified match: the later ones are judged against it.
-      earlier.reason.clear();
-      verified_ = {verified_[i]};
-      result_.T_map_odom = earlier.T_map_odom;
-      result_.localized_t = keyframe.t;
-      result_.agreeing = 2;
-    }
-    if (!result_.T_map_odom) {
-      record.reason = "not yet confirmed by a second match";
-      verified_.push_back(result_.matches.size());
-    }
+  // Not localised yet: the first earlier verified match this one agrees with
+  // confirms both; the earlier one places the run, and every other verified
+  // match is judged against it.
+  for (const std::size_t earlier : verified_) {
+    if (!offFrom(result_.matches[earlier], index).empty()) continue;
+    result_.T_map_odom = result_.matches[earlier].T_map_odom;
+    result_.localized_t = keyframe.t;
+    first_ = earlier;
+    for (const std::size_t other : verified_) judge(other);
+    judge(index);
+    return;
   }
-  result_.matches.push_back(std::move(record));
+  result_.matches[index].reason = "not yet confirmed by a second match";
+  verified_.push_back(index);
+}
+
+// What match `index` says of its query's pose in the map beyond what match
+// `earlier` and the odometry between their two keyframes say; empty when
+// within the drift.
+std::string MapLocalizer::offFrom(const MapMatchRecord& earlier, std::size_t index) const {
+  const MapMatchRecord& later = result_.matches[index];
+  const auto q = static_cast<std::size_t>(later.query);
+  const Eigen::Isometry3d T_map_query = later.T_map_odom * query_poses_[q];
+  const Eigen::Isometry3d offset = (earlier.T_map_odom * query_poses_[q]).inverse() * T_map_query;
+  return offByDrift(offset, std::abs(query_paths_[q] - query_paths_[static_cast<std::size_t>(earlier.query)]),
+                    config_);
+}
+
+void MapLocalizer::judge(std::size_t index) {
+  const std::string off = index == first_ ? "" : offFrom(result_.matches[first_], index);
+  result_.matches[index].reason = off.empty() ? "" : "disagrees with the localisation: " + off;
+  if (off.empty()) ++result_.agreeing;
 }
 
 }  // namespace lvslam::loop

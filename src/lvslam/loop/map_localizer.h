@@ -9,9 +9,11 @@
 // with an earlier one within the odometry's drift over the path between
 // them (offByDrift), as ORB-SLAM asks consecutive loop candidates to agree,
 // and a scan that also fits a second place in the map is not used at all
-// (a map holding both twin rooms). A place the world holds twice and the
+// (a map holding both twin rooms; candidates that verify at the same pose,
+// the same place mapped twice, do not count). A place the world holds twice and the
 // map once cannot be told apart by any of this: matches in the twin the map
 // lacks agree with each other and are taken for the one it has.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,29 +49,39 @@ struct MapLocalization {
   // knows where it is in the map).
   std::optional<Eigen::Isometry3d> T_map_odom;
   double localized_t = 0.0;
-  int agreeing = 0;  // verified matches, the pair included, within the drift of the first
+  int agreeing = 0;  // verified matches within the drift of the first, itself included
 };
 
 class MapLocalizer {
  public:
   // `map`: the saved map's keyframes, their T_odom_lidar in the map's frame.
-  MapLocalizer(std::vector<LoopKeyframe> map, const LoopClosureConfig& config,
+  MapLocalizer(std::shared_ptr<const std::vector<LoopKeyframe>> map, const LoopClosureConfig& config,
                const lidar::RegistrationConfig& registration);
 
   // Tries the run's next keyframe (T_odom_lidar in the run's odometry frame).
   void addKeyframe(const LoopKeyframe& keyframe);
   const MapLocalization& result() const { return result_; }
-  std::size_t mapKeyframes() const { return map_.size(); }
+  std::size_t mapKeyframes() const { return map_->size(); }
 
  private:
   LoopVerification verifyAt(const LoopKeyframe& keyframe, const LoopCandidate& candidate) const;
 
-  std::vector<LoopKeyframe> map_;
+  // Whether the scan also verifies at a place of the map other than
+  // `T_map_query` (at `best`): the reason if so, else empty.
+  std::string ambiguity(const LoopKeyframe& keyframe, const std::vector<LoopCandidate>& candidates,
+                        const LoopCandidate& best, const Eigen::Isometry3d& T_map_query) const;
+  std::string offFrom(const MapMatchRecord& earlier, std::size_t index) const;
+  // The verified match `index` judged against the localisation's first match.
+  void judge(std::size_t index);
+
+  std::shared_ptr<const std::vector<LoopKeyframe>> map_;
   std::vector<ScanContext> descriptors_;
   LoopClosureConfig config_;
   lidar::RegistrationConfig registration_;
   std::vector<double> query_paths_;  // of the run's keyframes tried, by index
-  std::vector<std::size_t> verified_;  // indices into result_.matches
+  std::vector<Eigen::Isometry3d> query_poses_;
+  std::vector<std::size_t> verified_;  // indices into result_.matches, before the localisation
+  std::size_t first_ = 0;              // the match that placed the run
   MapLocalization result_;
 };
 

@@ -26,7 +26,7 @@ LidarWorker::LidarWorker(const SystemConfig& config, const Calibration& calibrat
   if (config.loop.enabled) {
     keyframe_selector_.emplace(config.loop.keyframe_distance, config.loop.keyframe_angle_deg * M_PI / 180.0);
     loop_closure_ = std::make_unique<LoopClosureWorker>(config.loop, config.lidar.registration, !config.deterministic,
-                                                        config.localize_in.get());
+                                                        config.localize_in);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "lvslam/system/output_assembly.h"
 
+#include <cmath>
 #include <optional>
 
 #include "lvslam/system/final_visual_poses.h"
@@ -61,6 +62,26 @@ void addSubsystemTrajectories(const PipelineRecords& records, const SystemConfig
     if (l.T_odom_lidar) out.lidar_camera.push_back({l.t, *l.T_odom_lidar * T_lidar_camera});
 }
 
+// The online poses in a saved map (--map-in). The localisation places the
+// LiDAR odometry's frame (T_map_odom); fused mode's world is the
+// estimator's, from which the odometry frame drifts (T_world_odom =
+// T_world_camera T_odom_camera^-1 at a frame), taken at the frame nearest
+// the localising keyframe; in lidar mode the world is the odometry's frame.
+void placeInSavedMap(SystemOutput& out) {
+  if (!out.loop || !out.loop->map_localization || !out.loop->map_localization->T_map_odom) return;
+  const loop::MapLocalization& l = *out.loop->map_localization;
+  Eigen::Isometry3d T_odom_world = Eigen::Isometry3d::Identity();
+  const StampedPose* odom = nullptr;
+  for (const StampedPose& p : out.lidar_camera)
+    if (!odom || std::abs(p.t - l.localized_t) < std::abs(odom->t - l.localized_t)) odom = &p;
+  if (odom) {
+    for (const StampedPose& p : out.trajectory)
+      if (p.t == odom->t) T_odom_world = odom->T_world_frame * p.T_world_frame.inverse();
+  }
+  const Eigen::Isometry3d T_map_world = *l.T_map_odom * T_odom_world;
+  for (const StampedPose& p : out.trajectory) out.trajectory_in_map.push_back({p.t, T_map_world * p.T_world_frame});
+}
+
 }  // namespace
 
 SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& config,
@@ -96,6 +117,7 @@ SystemOutput assembleOutput(const PipelineRecords& records, const SystemConfig& 
                        : records.lidar_map;
   addLines(records, loop, out);
   addSubsystemTrajectories(records, config, T_lidar_camera, out);
+  placeInSavedMap(out);
   return out;
 }
 

@@ -34,6 +34,10 @@ struct SystemOutput {
   // loop correction when loops were closed.
   std::vector<PlyPoint> lidar_map;
   std::vector<PlySegment> lines_world;  // fusion lines (red) and the visual map's lines (green; orange from fusion)
+  // The online poses placed in a saved map once the run was localised in it
+  // (--map-in; an offline placement: the frames before the localising
+  // keyframe get it afterwards); empty otherwise.
+  Trajectory trajectory_in_map;
   // Each subsystem's own estimate, before the detection module chose: the
   // visual subsystem's T_map_camera per map id (in that map's frame, on the
   // final keyframes when system.final_map_poses), and the LiDAR odometry

@@ -9,6 +9,7 @@
 // record (where it starts). One thread at a time may use a file. A record
 // type's fields come from a `fields(archive, record)` that argument lookup
 // finds where the file is used (record_fields.h lists the pipeline's).
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -90,10 +91,14 @@ class RecordReader {
     value.reset();
     if (present) (*this)(value.emplace());
   }
+  // Item by item: a damaged count runs out of bytes before it can ask for
+  // more memory than the items read so far take.
   template <typename T>
   void operator()(std::vector<T>& items) {
-    items.assign(count(), T{});
-    for (T& item : items) (*this)(item);
+    const std::size_t n = count();
+    items.clear();
+    items.reserve(std::min<std::size_t>(n, 4096));
+    for (std::size_t i = 0; i < n; ++i) (*this)(items.emplace_back());
   }
   template <typename T, std::size_t N>
   void operator()(std::array<T, N>& items) {

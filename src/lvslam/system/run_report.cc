@@ -299,15 +299,7 @@ void writeRunOutputs(const std::string& out_dir, const PipelineRecords& records,
   if (ec) throw Error(out_dir, "cannot create the output folder: " + ec.message());
   writeTum((dir / "trajectory.tum").string(), output.trajectory);
   writeTum((dir / "trajectory_refined.tum").string(), output.trajectory_refined);
-  // In a saved map (--map-in): the online poses placed by where the run's
-  // world was found in the map, known from the localising keyframe on (an
-  // offline file: the earlier frames get the placement afterwards).
-  if (output.loop && output.loop->map_localization && output.loop->map_localization->T_map_odom) {
-    Trajectory in_map;
-    for (const StampedPose& p : output.trajectory)
-      in_map.push_back({p.t, *output.loop->map_localization->T_map_odom * p.T_world_frame});
-    writeTum((dir / "trajectory_in_map.tum").string(), in_map);
-  }
+  if (!output.trajectory_in_map.empty()) writeTum((dir / "trajectory_in_map.tum").string(), output.trajectory_in_map);
   if (!output.visual_maps.empty() || !output.lidar_camera.empty()) {
     const std::filesystem::path own = dir / "subsystems";
     std::filesystem::create_directories(own, ec);

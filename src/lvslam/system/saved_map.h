@@ -4,11 +4,12 @@
 // poses (each a registered scan's features: what place recognition and the
 // ICP localise against, map_localizer.h) and the lines of lines.ply, all in
 // the saving run's world frame, which is the map's frame. One binary file:
-// the tag "LVSLAM-MAP\n", a format version, the payload's size, then the
-// payload field by field (record_file.h's encoding, in the machine's byte
-// order: little-endian on x86-64 and ARM). Reading checks every field it
-// can (feature class, flags, finite values, rotations), so a damaged or
-// foreign file is an lvslam::Error naming it, never a wrong map.
+// the tag "LVSLAM-MAP\n", a format version, the payload's size and CRC-32,
+// then the payload field by field (record_file.h's encoding, in the
+// machine's byte order: little-endian on x86-64 and ARM). Reading checks the
+// CRC and every field it can (feature class, flags, finite and bounded
+// values, rotations), so a damaged or foreign file is an lvslam::Error
+// naming it, not a wrong map.
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -4,9 +4,9 @@ namespace lvslam::system {
 
 LoopClosureWorker::LoopClosureWorker(const loop::LoopClosureConfig& config,
                                      const lidar::RegistrationConfig& registration, bool threaded,
-                                     const std::vector<loop::LoopKeyframe>* map)
+                                     std::shared_ptr<const std::vector<loop::LoopKeyframe>> map)
     : closure_(config, registration) {
-  if (map) localizer_.emplace(*map, config, registration);
+  if (map) localizer_.emplace(std::move(map), config, registration);
   if (threaded) thread_ = std::thread([this] { run(); });
 }
 

@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <deque>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -22,7 +23,7 @@ class LoopClosureWorker {
  public:
   // `map`: a saved map's keyframes to localise the run in as well (--map-in), or none.
   LoopClosureWorker(const loop::LoopClosureConfig& config, const lidar::RegistrationConfig& registration,
-                    bool threaded, const std::vector<loop::LoopKeyframe>* map = nullptr);
+                    bool threaded, std::shared_ptr<const std::vector<loop::LoopKeyframe>> map = nullptr);
   ~LoopClosureWorker();
   LoopClosureWorker(const LoopClosureWorker&) = delete;
   LoopClosureWorker& operator=(const LoopClosureWorker&) = delete;
