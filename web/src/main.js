@@ -9,7 +9,7 @@ async function drawReport() {
   if (DATA.stats) summarySection();
   trajectorySection();
   errorSection();
-  if (DATA.stats) { detectionSection(); fusionSection(); timingSection(); }
+  if (DATA.stats) { detectionSection(); fusionSection(); loopSection(); timingSection(); }
   if (three) await view3dSection(three);
 }
 LV.ready = drawReport();

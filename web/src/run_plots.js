@@ -1,5 +1,6 @@
 // The run's own records from stats.json: the summary, the detection module,
-// the fusion framework and the time each stage took.
+// the fusion framework, loop closure (and a saved map) and the time each
+// stage took.
 function frameSeries(get) {
   const f = DATA.stats.frames;
   return f.map((r) => ({ x: rel(r.t), y: get(r) })).filter((q) => q.y != null && isFinite(q.y));
@@ -65,6 +66,33 @@ function fusionSection() {
     ? CLASS_NAMES.map((name, c) => lineDataset(name, st.scans.map((r) => ({ x: rel(r.t), y: r.features_per_class[c] })), CLASS_COLOURS[c], { fill: c ? '-1' : 'origin' }))
     : [lineDataset('features (all classes)', st.scans.map((r) => ({ x: rel(r.t), y: r.features })), COLOURS[0])];
   makeChart(s, 'fus-classes', 'LiDAR feature points per scan' + (perClass ? ', per class (stacked)' : ''), datasets, { yTitle: 'points', stacked: !!perClass });
+}
+
+// Loop closure's candidates and, with --map-in, each keyframe of the run
+// tried against the saved map with its verdict.
+function loopSection() {
+  const lp = DATA.stats.loop;
+  if (!lp) return;
+  const s = section('Loop closure and saved map', 'Loop candidates by Scan Context, verified by the ICP and gated ' +
+    'by the odometry\'s drift; with --map-in, the run\'s keyframes tried against the saved map.');
+  s.append(table(['', ''], [['keyframes', lp.keyframes],
+    ['loop candidates / verified / accepted', `${lp.candidates} / ${lp.verified} / ${lp.accepted}`],
+    ['keyframe graph on the', `${lp.odometry} trajectory`], ['largest keyframe move', fmtNum(lp.largest_keyframe_move_m, 3) + ' m']]));
+  const candidates = (accepted) => lp.candidate_log.filter((c) => c.accepted === accepted)
+    .map((c) => ({ x: rel(c.query_t), y: c.descriptor_distance }));
+  if (lp.candidate_log.length) makeChart(s, 'loop-candidates', 'Loop candidates: Scan Context distance per query keyframe', [
+    lineDataset('accepted', candidates(true), COLOURS[2], { showLine: false, pointRadius: 3 }),
+    lineDataset('rejected', candidates(false), COLOURS[1], { showLine: false, pointRadius: 3 }),
+  ], { yTitle: 'descriptor distance', aspectRatio: 4 });
+  const ml = lp.map_localization;
+  if (!ml) return;
+  s.append(el('h3', { text: 'Saved map (--map-in)' }));
+  const rows = [['localised', ml.localized ? `yes, at ${fmtNum(rel(ml.localized_t), 2)} s` : 'no'], ['keyframes tried', ml.tries]];
+  if (ml.localized) rows.push(['verified matches agreeing', ml.agreeing],
+    ['the run\'s world in the map (x, y, z)', ml.T_map_odom_xyz.map((v) => fmtNum(v, 3)).join(', ') + ' m']);
+  s.append(table(['', ''], rows));
+  s.append(table(['time (s)', 'map keyframe', 'descriptor distance', 'verdict'], ml.match_log.map((m) =>
+    [fmtNum(rel(m.query_t), 2), m.map_keyframe, fmtNum(m.descriptor_distance, 3), m.taken ? 'taken' : m.reason])));
 }
 
 function timingSection() {
