@@ -37,10 +37,4 @@ std::vector<lidar::FeaturePoint> keyframeFeatures(const sim::Scenario& scenario,
   return lidar::extractFeatures(points, config.ground, config.features);
 }
 
-std::vector<Eigen::Vector3f> positionsOf(const std::vector<lidar::FeaturePoint>& points) {
-  std::vector<Eigen::Vector3f> p;
-  for (const lidar::FeaturePoint& point : points) p.push_back(point.p);
-  return p;
-}
-
 }  // namespace lvslam::testing

@@ -24,6 +24,5 @@ std::vector<lidar::FeaturePoint> keyframeFeatures(const SyntheticScene& scene, c
 std::vector<lidar::FeaturePoint> keyframeFeatures(const sim::Scenario& scenario, const sim::LidarSimulator& lidar,
                                                   double t);
 
-std::vector<Eigen::Vector3f> positionsOf(const std::vector<lidar::FeaturePoint>& points);
 
 }  // namespace lvslam::testing

@@ -16,8 +16,8 @@ const Eigen::Isometry3d kCandidate = makePose(Eigen::Quaterniond::Identity(), Ei
 
 LoopVerification verify(const std::vector<lidar::FeaturePoint>& query, const std::vector<lidar::FeaturePoint>& candidate) {
   const LoopClosureConfig config;
-  const double yaw = compareScanContexts(makeScanContext(testing::positionsOf(query), config.scan_context),
-                                         makeScanContext(testing::positionsOf(candidate), config.scan_context))
+  const double yaw = compareScanContexts(scanContextOf(query, config.scan_context),
+                                         scanContextOf(candidate, config.scan_context))
                          .yaw;
   return verifyLoop(query, {{Eigen::Isometry3d::Identity(), &candidate}}, yaw, config, lidar::RegistrationConfig());
 }

@@ -17,12 +17,12 @@ const Eigen::Isometry3d kHere = makePose(Eigen::Quaterniond::Identity(), Eigen::
 TEST(ScanContext, MatchesTheSameScanTurnedAboutZAndGivesTheTurn) {
   const ScanContextConfig config;
   const auto scene = testing::structuredRoom();
-  const ScanContext candidate = makeScanContext(testing::positionsOf(testing::keyframeFeatures(scene, kHere)), config);
+  const ScanContext candidate = scanContextOf(testing::keyframeFeatures(scene, kHere), config);
   for (const double yaw_deg : {0.0, 37.0, -100.0, 170.0}) {
     const double yaw = yaw_deg * M_PI / 180.0;
     const Eigen::Isometry3d T_world_query = kHere * Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
     const ScanContext query =
-        makeScanContext(testing::positionsOf(testing::keyframeFeatures(scene, T_world_query)), config);
+        scanContextOf(testing::keyframeFeatures(scene, T_world_query), config);
     const ScanContextMatch match = compareScanContexts(query, candidate);
     EXPECT_LT(match.distance, 0.1) << yaw_deg;
     // The yaw of the query in the candidate's frame, to one sector (6 deg).
@@ -30,7 +30,7 @@ TEST(ScanContext, MatchesTheSameScanTurnedAboutZAndGivesTheTurn) {
     EXPECT_LE(std::abs(std::remainder(match.yaw - yaw, 2.0 * M_PI)), sector) << yaw_deg;
     // The ring key does not see the turn: closer to itself than to another place.
     const ScanContext elsewhere =
-        makeScanContext(testing::positionsOf(testing::keyframeFeatures(testing::storeRoom(), T_world_query)), config);
+        scanContextOf(testing::keyframeFeatures(testing::storeRoom(), T_world_query), config);
     EXPECT_LT(ringKeyDistance(query, candidate), 0.5 * ringKeyDistance(elsewhere, candidate)) << yaw_deg;
   }
 }
@@ -38,9 +38,9 @@ TEST(ScanContext, MatchesTheSameScanTurnedAboutZAndGivesTheTurn) {
 TEST(ScanContext, DoesNotMatchADifferentPlace) {
   const ScanContextConfig config;
   const ScanContext hall =
-      makeScanContext(testing::positionsOf(testing::keyframeFeatures(testing::structuredRoom(), kHere)), config);
+      scanContextOf(testing::keyframeFeatures(testing::structuredRoom(), kHere), config);
   const ScanContext store =
-      makeScanContext(testing::positionsOf(testing::keyframeFeatures(testing::storeRoom(), kHere)), config);
+      scanContextOf(testing::keyframeFeatures(testing::storeRoom(), kHere), config);
   EXPECT_GT(compareScanContexts(store, hall).distance, LoopClosureConfig().max_descriptor_distance);
 }
 

@@ -22,13 +22,6 @@ Matrix6d diagonalCovariance(double sigma_m, double sigma_rad) {
   return variances.asDiagonal();
 }
 
-std::vector<Eigen::Vector3f> positionsOf(const std::vector<lidar::FeaturePoint>& points) {
-  std::vector<Eigen::Vector3f> p;
-  p.reserve(points.size());
-  for (const lidar::FeaturePoint& point : points) p.push_back(point.p);
-  return p;
-}
-
 std::string offOdometry(const Eigen::Isometry3d& T_odom_from, const Eigen::Isometry3d& T_odom_to, double path,
                         const Eigen::Isometry3d& T_candidate_query, const LoopClosureConfig& config) {
   return offByDrift((T_odom_from.inverse() * T_odom_to).inverse() * T_candidate_query, path, config);
@@ -106,7 +99,7 @@ LoopClosure::LoopClosure(const LoopClosureConfig& config, const lidar::Registrat
     : config_(config), registration_(registration) {}
 
 bool LoopClosure::addKeyframe(LoopKeyframe keyframe) {
-  descriptors_.push_back(makeScanContext(positionsOf(keyframe.points), config_.scan_context));
+  descriptors_.push_back(scanContextOf(keyframe.points, config_.scan_context));
   path_lengths_.push_back(keyframe.path_length);
   keyframes_.push_back(std::move(keyframe));
   const auto found =

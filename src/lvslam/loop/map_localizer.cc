@@ -9,23 +9,12 @@
 
 namespace lvslam::loop {
 
-namespace {
-
-std::vector<Eigen::Vector3f> positionsOf(const std::vector<lidar::FeaturePoint>& points) {
-  std::vector<Eigen::Vector3f> p;
-  p.reserve(points.size());
-  for (const lidar::FeaturePoint& point : points) p.push_back(point.p);
-  return p;
-}
-
-}  // namespace
-
 MapLocalizer::MapLocalizer(std::shared_ptr<const std::vector<LoopKeyframe>> map, const LoopClosureConfig& config,
                            const lidar::RegistrationConfig& registration)
     : map_(std::move(map)), config_(config), registration_(registration) {
   descriptors_.reserve(map_->size() + 1);
   for (const LoopKeyframe& kf : *map_)
-    descriptors_.push_back(makeScanContext(positionsOf(kf.points), config_.scan_context));
+    descriptors_.push_back(scanContextOf(kf.points, config_.scan_context));
 }
 
 LoopVerification MapLocalizer::verifyAt(const LoopKeyframe& keyframe, const LoopCandidate& candidate) const {
@@ -62,7 +51,7 @@ void MapLocalizer::addKeyframe(const LoopKeyframe& keyframe) {
   query_poses_.push_back(keyframe.T_odom_lidar);
   if (map_->empty()) return;
   // The map's keyframes and the query, every map keyframe a candidate.
-  descriptors_.push_back(makeScanContext(positionsOf(keyframe.points), config_.scan_context));
+  descriptors_.push_back(scanContextOf(keyframe.points, config_.scan_context));
   std::vector<double> paths(descriptors_.size(), 0.0);
   paths.back() = 1.0;
   const std::vector<LoopCandidate> candidates =

@@ -5,6 +5,13 @@
 
 namespace lvslam::loop {
 
+ScanContext scanContextOf(const std::vector<lidar::FeaturePoint>& points_lidar, const ScanContextConfig& config) {
+  std::vector<Eigen::Vector3f> positions;
+  positions.reserve(points_lidar.size());
+  for (const lidar::FeaturePoint& point : points_lidar) positions.push_back(point.p);
+  return makeScanContext(positions, config);
+}
+
 ScanContext makeScanContext(const std::vector<Eigen::Vector3f>& points_lidar, const ScanContextConfig& config) {
   ScanContext sc;
   sc.bins = Eigen::MatrixXf::Zero(config.rings, config.sectors);

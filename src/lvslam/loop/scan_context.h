@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "lvslam/lidar/feature_point.h"
+
 namespace lvslam::loop {
 
 struct ScanContextConfig {
@@ -25,6 +27,8 @@ struct ScanContext {
 };
 
 ScanContext makeScanContext(const std::vector<Eigen::Vector3f>& points_lidar, const ScanContextConfig& config);
+// The same of a keyframe's feature points (their positions).
+ScanContext scanContextOf(const std::vector<lidar::FeaturePoint>& points_lidar, const ScanContextConfig& config);
 
 struct ScanContextMatch {
   double distance = 1.0;  // in [0, 1]: mean over the columns both scans fill of 1 - cos

@@ -109,13 +109,7 @@ SavedMap mapOf(const MapPayload& payload, const std::string& path) {
   }
   for (const MapLine& l : payload.lines) {
     if (!(l.a.norm() < kMaxMapExtent) || !(l.b.norm() < kMaxMapExtent)) throw bad("a line end out of range");
-    PlySegment s;
-    s.a = l.a;
-    s.b = l.b;
-    s.r = l.r;
-    s.g = l.g;
-    s.b_colour = l.blue;
-    map.lines.push_back(s);
+    map.lines.push_back({l.a, l.b, l.r, l.g, l.blue});
   }
   return map;
 }
